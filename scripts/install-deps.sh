@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages fsicontact needs to build, test and run.
+# Quiet and fast when everything is present: only missing packages reach apt.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev          # dense/sparse linear algebra
+  libsuitesparse-dev     # UMFPACK, CHOLMOD (through Eigen's wrappers)
+  libgmsh-dev            # Gmsh SDK: mesh generation and .msh reading
+  coinor-libipopt-dev    # IPOPT, the paper's QP solver
+  libtomlplusplus-dev    # case files
+  libcli11-dev           # command line
+  libcairo2-dev          # PNG figures
+  nlohmann-json3-dev     # summary.json
+  libboost-dev           # Boost.Geometry R-tree (point location)
+  libgtest-dev libbenchmark-dev
+)
+if [[ "${1:-}" == "--with-freefem" ]]; then
+  packages+=(freefem++ libfreefem++ time)   # only for bench-compare
+fi
+if [[ "${1:-}" == "--with-fuzz" ]]; then
+  packages+=(clang libclang-rt-14-dev)       # libFuzzer and sanitizer runtimes
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+[[ $(id -u) -ne 0 ]] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

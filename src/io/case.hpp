@@ -1,0 +1,81 @@
+// A case: the validated parameters of one run (SPEC §8). Defaults are the paper's
+// §7.2 values; a case file without a [fluid] section is the contact-only problem.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+struct StructureParams {
+  double L = 0.3, H = 0.03;
+  double E = 3.0e5, nu = 0.45;
+  Point f{0.0, -9.81 * 1100.0};  // f_S, N/m³
+  Point h_N{0.0, 0.0};           // surface load on Γ_N, N/m²
+  double h = 0.015;              // hS
+  std::string mesh;              // optional .msh file (resolved path)
+};
+
+struct ObstacleParams {
+  double x0 = 0.2, y0 = -0.07, r = 0.05;
+  double gamma = 0.8;  // Γ_C = (x0 − γr, x0 + γr) × {0}
+  double xc_min() const { return x0 - gamma * r; }
+  double xc_max() const { return x0 + gamma * r; }
+};
+
+struct FluidParams {
+  double L1 = 0.41, H1 = 0.5, H2 = 0.5;
+  double mu = 0.0035;
+  Point f{0.0, -9.81 * 100.0};  // f_F, N/m³
+  double Vmax = 8.0;
+  double h = 0.01;                  // hF
+  std::string mesh;                 // optional .msh file (resolved path)
+  std::string chi = "barycentre";   // "barycentre" | "area-fraction"
+};
+
+struct CouplingParams {
+  double eps = 1.0e-5;
+  double omega = 0.1;
+  double tol = 1.0e-4;
+  int max_iterations = 100;
+  std::string scheme = "constant";  // "constant" | "aitken" | "iqn-ils"
+};
+
+struct ContactParams {
+  std::string solver = "active-set";  // "active-set" | "ipopt"
+};
+
+struct OutputParams {
+  std::string dir;   // default out/<name>
+  bool png = true;
+  bool vtu = true;
+};
+
+struct Case {
+  std::string name = "paper-7.2";
+  std::string source = "(built-in paper-7.2 case)";  // where it came from, for messages
+  StructureParams structure;
+  ObstacleParams obstacle;
+  std::optional<FluidParams> fluid = FluidParams{};
+  CouplingParams coupling;
+  ContactParams contact;
+  OutputParams output;
+};
+
+// Loads `path` (or the built-in §7.2 case if empty), applies `overrides`
+// ("section.key=value", value in TOML syntax or a bare string), and validates.
+// Throws InputError "<file>: <key> ...; allowed: ..." on the first problem.
+Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The resolved case as TOML text (written beside the results, rerunnable).
+std::string to_toml(const Case& c);
+
+// Limits on problem size (stated in error messages and docs/reliability.md).
+inline constexpr double kMaxStructureTriangles = 2.0e5;
+inline constexpr double kMaxFluidTriangles = 4.0e6;
+inline constexpr int kMaxIterations = 100000;
+
+}  // namespace fsi

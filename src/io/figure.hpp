@@ -1,0 +1,63 @@
+// A small plotting canvas over Cairo: world coordinates with equal aspect ratio,
+// P1 fields shaded per vertex, outlines, axes with ticks, a colour bar, PNG output.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+typedef struct _cairo cairo_t;
+typedef struct _cairo_surface cairo_surface_t;
+
+namespace fsi {
+
+using Rgb = std::array<double, 3>;
+
+// Viridis colour map, t in [0,1] (clamped).
+Rgb viridis(double t);
+
+struct WorldBox {
+  double x_min, x_max, y_min, y_max;
+};
+
+class Figure {
+ public:
+  // `width` pixels for the plot area; the height follows from the box (equal aspect).
+  Figure(const WorldBox& box, int width, const std::string& title);
+  ~Figure();
+  Figure(const Figure&) = delete;
+  Figure& operator=(const Figure&) = delete;
+
+  // Field `value` per vertex of `mesh`, colour-mapped on [lo, hi], linearly shaded.
+  void shade(const Mesh& mesh, const Eigen::VectorXd& value, double lo, double hi);
+  // Same with one value per triangle.
+  void fill_cells(const Mesh& mesh, const Eigen::VectorXd& value, double lo, double hi);
+  void polyline(const std::vector<Point>& points, const Rgb& colour, double width_px,
+                bool closed = false, bool dashed = false);
+  void filled_polygon(const std::vector<Point>& points, const Rgb& colour, double alpha = 1.0);
+  void marker(const Point& p, const Rgb& colour, double radius_px);
+  void colour_bar(double lo, double hi, const std::string& label);
+  void legend(const std::vector<std::pair<Rgb, std::string>>& entries);
+  void axes(const std::string& x_label, const std::string& y_label);
+  void note(const std::string& text);  // a line under the title
+  void save_png(const std::string& path);
+
+ private:
+  double px(double x) const;
+  double py(double y) const;
+
+  WorldBox box_;
+  double scale_;
+  int plot_w_, plot_h_, left_, top_, width_, height_;
+  int notes_ = 0;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
+};
+
+// Boundary of a mesh as closed polylines (one per boundary loop).
+std::vector<std::vector<Point>> boundary_loops(const Mesh& mesh);
+
+}  // namespace fsi

@@ -1,0 +1,157 @@
+#include "qp/active_set_solver.hpp"
+
+#include <cstdio>
+#include <set>
+
+namespace fsi {
+namespace {
+
+std::vector<int> indices_of(const std::vector<bool>& mask) {
+  std::vector<int> idx;
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) idx.push_back(static_cast<int>(i));
+  return idx;
+}
+
+}  // namespace
+
+void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C) {
+  if (A.rows() != A.cols() || C.cols() != A.rows())
+    throw QpError("active-set: operator and constraint sizes do not match");
+  A_ = A;
+  C_ = C;
+  cholesky_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix>>();
+  cholesky_->compute(A_);
+  if (cholesky_->info() != Eigen::Success)
+    throw QpError("active-set: Cholesky factorisation of A_S failed (not positive definite: "
+                  "is the structure clamped?)");
+  // S = C A⁻¹ Cᵀ by blocks of columns, so A⁻¹Cᵀ is never stored whole.
+  const Eigen::Index m = C_.rows();
+  S_.resize(m, m);
+  const SparseMatrix Ct = C_.transpose();
+  constexpr Eigen::Index block = 64;
+  for (Eigen::Index j0 = 0; j0 < m; j0 += block) {
+    const Eigen::Index nb = std::min(block, m - j0);
+    const Eigen::MatrixXd rhs = Eigen::MatrixXd(Ct.middleCols(j0, nb));
+    const Eigen::MatrixXd Z = cholesky_->solve(rhs);
+    S_.middleCols(j0, nb) = C_ * Z;
+  }
+  S_ = 0.5 * (S_ + S_.transpose()).eval();  // symmetric to round-off
+  kappa_ = S_.diagonal().cwiseInverse();
+  if (m > 0 && !(S_.diagonal().minCoeff() > 0))
+    throw QpError("active-set: a contact row has no free degree of freedom");
+}
+
+Eigen::VectorXd ActiveSetSolver::solve_active(const std::vector<bool>& active,
+                                              const Eigen::VectorXd& d) const {
+  const std::vector<int> idx = indices_of(active);
+  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(d.size());
+  if (idx.empty()) return alpha;
+  const Eigen::MatrixXd S_AA = S_(idx, idx);
+  Eigen::LLT<Eigen::MatrixXd> llt(S_AA);
+  if (llt.info() != Eigen::Success) throw QpError("active-set: contact rows are dependent");
+  const Eigen::VectorXd d_A = d(idx);
+  const Eigen::VectorXd alpha_A = llt.solve(-d_A);
+  alpha(idx) = alpha_A;
+  return alpha;
+}
+
+// Lawson–Hanson for min ½αᵀSα + dᵀα, α ≥ 0 (NNLS in normal-equation form):
+// finite, monotone, never cycles.
+Eigen::VectorXd ActiveSetSolver::lawson_hanson(const Eigen::VectorXd& d, int& iterations) const {
+  const Eigen::Index m = d.size();
+  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(m);
+  std::vector<bool> passive(m, false);
+  const double tol = 1e-14 * std::max(d.lpNorm<Eigen::Infinity>(), 1e-300);
+  Eigen::VectorXd w = d;
+  for (int outer = 0; outer < 3 * m + 10; ++outer) {
+    Eigen::Index j = -1;
+    double most_negative = -tol;
+    for (Eigen::Index i = 0; i < m; ++i)
+      if (!passive[i] && w[i] < most_negative) most_negative = w[i], j = i;
+    if (j < 0) break;
+    passive[j] = true;
+    for (int inner = 0; inner < 3 * m + 10; ++inner) {
+      ++iterations;
+      const Eigen::VectorXd s = solve_active(passive, d);
+      bool positive = true;
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (passive[i] && s[i] <= 0) positive = false;
+      if (positive) {
+        alpha = s;
+        break;
+      }
+      double theta = 1.0;
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (passive[i] && s[i] <= 0) theta = std::min(theta, alpha[i] / (alpha[i] - s[i]));
+      alpha += theta * (s - alpha);
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (passive[i] && alpha[i] <= 1e-300) passive[i] = false, alpha[i] = 0;
+    }
+    w = d + S_ * alpha;
+  }
+  return alpha;
+}
+
+QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
+                                const QpResult* warm) {
+  if (!cholesky_) throw QpError("active-set: solve before set_operator");
+  if (b.size() != A_.rows() || c.size() != C_.rows())
+    throw QpError("active-set: load or bound has the wrong size");
+  used_fallback_ = false;
+  const Eigen::Index m = C_.rows();
+  const Eigen::VectorXd d = C_ * cholesky_->solve(b) - c;  // slack at α = 0
+
+  QpResult result;
+  result.active.assign(m, false);
+  if (warm && warm->active.size() == static_cast<std::size_t>(m))
+    result.active = warm->active;
+  else
+    for (Eigen::Index i = 0; i < m; ++i) result.active[i] = d[i] < 0;
+
+  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(m);
+  bool converged = m == 0;
+  std::set<std::vector<bool>> visited{result.active};
+  while (!converged && result.iterations < max_iterations) {
+    ++result.iterations;
+    alpha = solve_active(result.active, d);
+    const Eigen::VectorXd w = d + S_ * alpha;
+    std::vector<bool> next(m);
+    int changed = 0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      next[i] = alpha[i] - kappa_[i] * w[i] > 0;
+      changed += next[i] != result.active[i];
+    }
+    if (progress) {
+      char line[160];
+      std::snprintf(line, sizeof line, "active-set it %3d: %d active of %d, %d changed",
+                    result.iterations, static_cast<int>(indices_of(next).size()),
+                    static_cast<int>(m), changed);
+      progress(line);
+    }
+    if (changed == 0) {
+      converged = true;
+    } else if (!visited.insert(next).second) {
+      break;  // cycling: hand over to Lawson–Hanson
+    } else {
+      result.active = next;
+    }
+  }
+  if (!converged) {
+    used_fallback_ = true;
+    alpha = lawson_hanson(d, result.iterations);
+    const Eigen::VectorXd w = d + S_ * alpha;
+    for (Eigen::Index i = 0; i < m; ++i) result.active[i] = alpha[i] > 0 || w[i] <= 0;
+    if (progress) progress("active-set: cycling detected, finished by Lawson-Hanson");
+  }
+  result.alpha = alpha.cwiseMax(0.0);
+  result.x = cholesky_->solve(b + C_.transpose() * result.alpha);
+  result.kkt = kkt_residuals(A_, b, C_, c, result.x, result.alpha);
+  result.status = used_fallback_ ? "converged (Lawson-Hanson fallback)" : "converged";
+  if (!(result.kkt.max() <= kkt_tolerance))
+    throw QpError("active-set: KKT residual " + format_kkt(result.kkt) +
+                  " above tolerance after " + std::to_string(result.iterations) + " iterations");
+  return result;
+}
+
+}  // namespace fsi

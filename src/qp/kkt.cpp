@@ -1,0 +1,49 @@
+#include <algorithm>
+#include <cstdio>
+
+#include "qp/qp_problem.hpp"
+
+namespace fsi {
+
+double KktResiduals::max() const {
+  return std::max({stationarity, feasibility, complementarity, dual_feasibility});
+}
+
+int QpResult::active_count() const {
+  return static_cast<int>(std::count(active.begin(), active.end(), true));
+}
+
+std::string format_kkt(const KktResiduals& r) {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "stationarity %.2e, feasibility %.2e, complementarity %.2e, dual feasibility %.2e",
+                r.stationarity, r.feasibility, r.complementarity, r.dual_feasibility);
+  return text;
+}
+
+double slack_scale(const SparseMatrix& C, const Eigen::VectorXd& c, const Eigen::VectorXd& x) {
+  Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(C.rows());
+  for (Eigen::Index j = 0; j < C.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(C, j); it; ++it) row_sums[it.row()] += std::abs(it.value());
+  const double c_norm = c.size() ? c.lpNorm<Eigen::Infinity>() : 0.0;
+  const double Cx_norm = row_sums.size() ? row_sums.maxCoeff() * (x.size() ? x.lpNorm<Eigen::Infinity>() : 0.0) : 0.0;
+  return std::max({c_norm, Cx_norm, 1e-300});
+}
+
+KktResiduals kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& b, const SparseMatrix& C,
+                           const Eigen::VectorXd& c, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& alpha) {
+  constexpr double tiny = 1e-300;
+  auto inf = [](const Eigen::VectorXd& v) { return v.size() ? v.lpNorm<Eigen::Infinity>() : 0.0; };
+  const Eigen::VectorXd Ax = A * x, Cx = C * x, Ct_alpha = C.transpose() * alpha;
+  KktResiduals r;
+  r.stationarity = inf(Ax - b - Ct_alpha) / std::max({inf(b), inf(Ax), inf(Ct_alpha), tiny});
+  if (c.size() == 0) return r;
+  const double gap_scale = slack_scale(C, c, x);
+  r.feasibility = (c - Cx).cwiseMax(0.0).maxCoeff() / gap_scale;
+  r.complementarity = inf(alpha.cwiseProduct(Cx - c)) / std::max(inf(alpha) * gap_scale, tiny);
+  r.dual_feasibility = (-alpha).cwiseMax(0.0).maxCoeff() / std::max(inf(alpha), tiny) + 0.0;
+  return r;
+}
+
+}  // namespace fsi

@@ -1,0 +1,69 @@
+// The convex QP of the contact problem (paper eqs. 20–22, Dirichlet dofs eliminated):
+//     min ½ xᵀ A x − bᵀ x   subject to   C x ≥ c,
+// with A symmetric positive definite. α ≥ 0 are the multipliers of the rows of C.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fsi {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct KktResiduals {
+  double stationarity = 0;     // ‖Ax − b − Cᵀα‖∞, relative to the largest term
+  double feasibility = 0;      // max(0, c − Cx)∞, relative to max(‖c‖∞, ‖C‖∞‖x‖∞)
+  double complementarity = 0;  // max |α_i (Cx − c)_i|, relative to ‖α‖∞ times that
+  double dual_feasibility = 0; // max(0, −α)∞, relative to ‖α‖∞
+  double max() const;
+};
+
+struct QpResult {
+  Eigen::VectorXd x;
+  Eigen::VectorXd alpha;      // contact multipliers (discrete contact pressure)
+  std::vector<bool> active;   // rows with C x = c at the solution
+  int iterations = 0;
+  KktResiduals kkt;
+  std::string status;         // solver's own words on how it ended
+  int active_count() const;
+};
+
+// The size of the terms forming a slack Cx − c: max(‖c‖∞, ‖C‖∞‖x‖∞). With a zero
+// gap (c = 0, a body resting on the floor) ‖c‖ alone would make round-off look 100%.
+double slack_scale(const SparseMatrix& C, const Eigen::VectorXd& c, const Eigen::VectorXd& x);
+
+// "stationarity 1.2e-15, feasibility 0, ..." for messages.
+std::string format_kkt(const KktResiduals& r);
+
+KktResiduals kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& b, const SparseMatrix& C,
+                           const Eigen::VectorXd& c, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& alpha);
+
+// A QP solver failed (did not converge, singular operator); carries the status.
+struct QpError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class QpSolver {
+ public:
+  virtual ~QpSolver() = default;
+  // Sets the operator A (n×n) and the constraint matrix C (m×n); done once, reused
+  // by every later solve (the structure's A_S and C_S do not change in the coupling).
+  virtual void set_operator(const SparseMatrix& A, const SparseMatrix& C) = 0;
+  // Solves with load b and bounds c. `warm`, if given, is an earlier result used as
+  // a starting point. Throws QpError if no minimiser is found.
+  virtual QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
+                         const QpResult* warm = nullptr) = 0;
+  virtual std::string name() const = 0;
+
+  // One line per solver iteration (for a progress display); may be empty.
+  std::function<void(const std::string&)> progress;
+  // Acceptance threshold on the largest relative KKT residual.
+  double kkt_tolerance = 1e-9;
+};
+
+}  // namespace fsi

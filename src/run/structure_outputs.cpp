@@ -1,0 +1,103 @@
+#include "run/structure_outputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "io/figure.hpp"
+#include "io/vtu.hpp"
+#include "solid/stress.hpp"
+
+namespace fsi {
+namespace {
+
+const Rgb kRed{0.85, 0.1, 0.1}, kGrey{0.55, 0.55, 0.55}, kDark{0.15, 0.15, 0.15},
+    kOrange{0.95, 0.55, 0.1};
+
+std::vector<Point> disk_polygon(const ObstacleParams& o, int segments = 360) {
+  std::vector<Point> p;
+  for (int k = 0; k < segments; ++k) {
+    const double t = 2 * std::numbers::pi * k / segments;
+    p.emplace_back(o.x0 + o.r * std::cos(t), o.y0 + o.r * std::sin(t));
+  }
+  return p;
+}
+
+}  // namespace
+
+void write_structure_vtu(const std::string& path, const StructureSetup& s,
+                         const ContactSolution& solution, bool deformed) {
+  const Mesh& ref = s.mesh();
+  const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
+  Eigen::VectorXd multiplier = Eigen::VectorXd::Zero(ref.num_vertices());
+  Eigen::VectorXd status = Eigen::VectorXd::Zero(ref.num_vertices());
+  const auto& rows = s.solver->contact().row_vertex;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    multiplier[rows[i]] = solution.qp.alpha[static_cast<Eigen::Index>(i)];
+    status[rows[i]] = solution.qp.active[i] ? 1.0 : 0.0;
+  }
+  Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
+  write_vtu(path, deformed ? displaced(ref, u1, u2) : ref,
+            {vector_field("displacement", u1, u2), scalar_field("displacement_magnitude", magnitude),
+             scalar_field("contact_multiplier", multiplier), scalar_field("contact_status", status),
+             scalar_field("von_mises", von_mises(ref, s.lame, solution.u), true)});
+}
+
+void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
+                         const ContactSolution& solution) {
+  const Mesh& ref = s.mesh();
+  const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
+  const Mesh def = displaced(ref, u1, u2);
+  const Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
+  const auto& o = c.obstacle;
+  // Frame: the structure before and after, and the top of the obstacle.
+  WorldBox box{0, c.structure.L, std::min(0.0, o.y0 + 0.3 * o.r), c.structure.H};
+  for (const Point& p : def.vertices) {
+    box.x_min = std::min(box.x_min, p.x());
+    box.x_max = std::max(box.x_max, p.x());
+    box.y_min = std::min(box.y_min, p.y());
+    box.y_max = std::max(box.y_max, p.y());
+  }
+  const double pad = 0.06 * std::max(box.x_max - box.x_min, box.y_max - box.y_min);
+  box = {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
+  const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
+  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle");
+  const ContactSummary cs = summarize_contact(*s.solver, solution);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "f_S = (%g, %g) N/m^3, E = %g Pa, nu = %g;  mesh %d triangles / %d vertices;  "
+                "max |u| = %.4g m",
+                c.structure.f.x(), c.structure.f.y(), c.structure.E, c.structure.nu,
+                ref.num_triangles(), ref.num_vertices(), magnitude.maxCoeff());
+  fig.note(line);
+  if (cs.active_nodes > 0)
+    std::snprintf(line, sizeof line,
+                  "contact on %d node(s), X1 in [%.5g, %.5g] m, peak pressure %.4g Pa",
+                  cs.active_nodes, cs.x_min, cs.x_max, cs.max_multiplier);
+  else
+    std::snprintf(line, sizeof line, "no contact");
+  fig.note(line);
+  fig.filled_polygon(disk_polygon(o), {0.82, 0.82, 0.82});
+  fig.polyline(disk_polygon(o), kDark, 1.2, true);
+  fig.shade(def, magnitude, 0.0, magnitude.maxCoeff());
+  for (const auto& loop : boundary_loops(ref)) fig.polyline(loop, kGrey, 1.2, true, true);
+  for (const auto& loop : boundary_loops(def)) fig.polyline(loop, kDark, 1.0, true);
+  // Γ_C on the reference outline, and the active part on the deformed one.
+  fig.polyline({Point(o.xc_min(), 0), Point(o.xc_max(), 0)}, kOrange, 3.0);
+  const std::vector<int> active = active_vertices(*s.solver, solution);
+  for (const auto& e : ref.edges_on(ref.label("Gamma_C"))) {
+    const bool a0 = std::find(active.begin(), active.end(), e.v[0]) != active.end();
+    const bool a1 = std::find(active.begin(), active.end(), e.v[1]) != active.end();
+    if (a0 && a1) fig.polyline({def.vertices[e.v[0]], def.vertices[e.v[1]]}, kRed, 4.0);
+  }
+  for (int v : active) fig.marker(def.vertices[v], kRed, 4.5);
+  fig.axes("x (m)", "y (m)");
+  fig.colour_bar(0.0, magnitude.maxCoeff(), "|u| (m)");
+  fig.legend({{kGrey, "undeformed (dashed)"},
+              {kOrange, "Gamma_C"},
+              {kRed, "contact zone"},
+              {{0.82, 0.82, 0.82}, "rigid obstacle"}});
+  fig.save_png(path);
+}
+
+}  // namespace fsi

@@ -1,0 +1,34 @@
+// Everything about the structure that a run builds once: mesh, material, obstacle,
+// A_S and C_S with their QP solver, and the fixed part of the load b_S.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "io/case.hpp"
+#include "qp/qp_problem.hpp"
+#include "solid/contact_solver.hpp"
+#include "solid/obstacle.hpp"
+
+namespace fsi {
+
+struct StructureSetup {
+  Lame lame;
+  std::unique_ptr<DiskFoundation> foundation;
+  std::unique_ptr<QpSolver> qp;
+  std::unique_ptr<ElasticContactSolver> solver;
+  Eigen::VectorXd b_applied;  // ∫ f_S·w + ∫_{Γ_N} h_S·w (eq. 16)
+  const Mesh& mesh() const { return solver->mesh(); }
+};
+
+// Builds or reads the mesh (MeshError on a bad user file becomes InputError) and
+// checks it against the obstacle.
+Mesh make_structure_mesh(const Case& c);
+
+StructureSetup make_structure(const Case& c, Mesh mesh,
+                              const std::function<void(const std::string&)>& progress);
+
+std::unique_ptr<QpSolver> make_qp_solver(const std::string& name);
+
+}  // namespace fsi

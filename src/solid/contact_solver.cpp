@@ -1,0 +1,110 @@
+#include "solid/contact_solver.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <stdexcept>
+
+namespace fsi {
+namespace {
+
+// Columns `keep` of the identity: x_full = P x_free.
+SparseMatrix selection(int n_full, const std::vector<int>& keep) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t k = 0; k < keep.size(); ++k) t.emplace_back(keep[k], static_cast<int>(k), 1.0);
+  SparseMatrix P(n_full, static_cast<int>(keep.size()));
+  P.setFromTriplets(t.begin(), t.end());
+  return P;
+}
+
+// A_S restricted to the free dofs is positive definite iff no rigid motion
+// (1,0), (0,1), (−y,x) vanishes on all fixed dofs, i.e. the 3 modes restricted to
+// the fixed dofs have rank 3. Checked exactly here because a sparse Cholesky of a
+// singular stiffness matrix may "succeed" in floating point and return garbage.
+void require_no_rigid_motion(const Mesh& mesh, const std::vector<int>& fixed) {
+  const int nv = mesh.num_vertices();
+  Eigen::MatrixXd modes(fixed.size(), 3);
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const Point& p : mesh.vertices) centre += p / nv;
+  double scale = 0;
+  for (const Point& p : mesh.vertices) scale = std::max(scale, (p - centre).norm());
+  for (std::size_t k = 0; k < fixed.size(); ++k) {
+    const int v = fixed[k] % nv, c = fixed[k] / nv;
+    const Point x = (mesh.vertices[v] - centre) / scale;
+    modes(k, 0) = c == 0 ? 1.0 : 0.0;
+    modes(k, 1) = c == 1 ? 1.0 : 0.0;
+    modes(k, 2) = c == 0 ? -x.y() : x.x();
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(modes);
+  qr.setThreshold(1e-10);
+  if (fixed.empty() || qr.rank() < 3)
+    throw std::invalid_argument(
+        "the fixed degrees of freedom do not prevent rigid motion (is Gamma_D a clamped side "
+        "with at least two vertices?)");
+}
+
+}  // namespace
+
+std::vector<int> clamped_dofs(const Mesh& mesh, int label) {
+  std::vector<int> dofs;
+  for (int v : mesh.vertices_on(label))
+    for (int c = 0; c < 2; ++c) dofs.push_back(dof(v, c, mesh.num_vertices()));
+  std::sort(dofs.begin(), dofs.end());
+  return dofs;
+}
+
+ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
+                                           const Foundation& foundation, int gamma_c_label,
+                                           const std::vector<int>& fixed_dofs, QpSolver& solver)
+    : mesh_(std::move(mesh)),
+      A_S_(assemble_elasticity(mesh_, lame)),
+      contact_(assemble_contact(mesh_, gamma_c_label, foundation)),
+      solver_(solver) {
+  const int n = 2 * mesh_.num_vertices();
+  std::vector<bool> fixed(n, false);
+  for (int d : fixed_dofs) fixed.at(d) = true;
+  require_no_rigid_motion(mesh_, fixed_dofs);
+  for (int d = 0; d < n; ++d)
+    if (!fixed[d]) free_dofs_.push_back(d);
+  const SparseMatrix P = selection(n, free_dofs_);
+  A_free_ = P.transpose() * A_S_ * P;
+  C_free_ = contact_.C_S * P;
+  solver_.set_operator(A_free_, C_free_);
+}
+
+ContactSolution ElasticContactSolver::solve(const Eigen::VectorXd& b_S,
+                                            const ContactSolution* warm) {
+  ContactSolution out;
+  out.qp = solver_.solve(b_S(free_dofs_), contact_.c_lb, warm ? &warm->qp : nullptr);
+  out.u = Eigen::VectorXd::Zero(b_S.size());
+  out.u(free_dofs_) = out.qp.x;
+  return out;
+}
+
+}  // namespace fsi
+
+namespace fsi {
+
+std::vector<int> active_vertices(const ElasticContactSolver& solver, const ContactSolution& s) {
+  std::vector<int> out;
+  const auto& rows = solver.contact().row_vertex;
+  for (std::size_t i = 0; i < rows.size() && i < s.qp.active.size(); ++i)
+    if (s.qp.active[i]) out.push_back(rows[i]);
+  return out;
+}
+
+ContactSummary summarize_contact(const ElasticContactSolver& solver, const ContactSolution& s) {
+  ContactSummary out;
+  const std::vector<int> active = active_vertices(solver, s);
+  out.active_nodes = static_cast<int>(active.size());
+  if (!active.empty()) {
+    out.x_min = out.x_max = solver.mesh().vertices[active[0]].x();
+    for (int v : active) {
+      out.x_min = std::min(out.x_min, solver.mesh().vertices[v].x());
+      out.x_max = std::max(out.x_max, solver.mesh().vertices[v].x());
+    }
+  }
+  out.max_multiplier = s.qp.alpha.size() ? s.qp.alpha.maxCoeff() : 0.0;
+  return out;
+}
+
+}  // namespace fsi

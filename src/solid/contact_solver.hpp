@@ -1,0 +1,62 @@
+// The elastic structure with frictionless contact (SPEC §2): builds A_S and C_S once
+// on the reference mesh, eliminates the Dirichlet dofs, and solves the QP for any
+// load b_S. The coupling calls solve() once per fixed-point iteration.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "qp/qp_problem.hpp"
+#include "solid/contact.hpp"
+#include "solid/elasticity.hpp"
+
+namespace fsi {
+
+struct ContactSolution {
+  Eigen::VectorXd u;       // displacement, 2nv dofs (paper ordering)
+  QpResult qp;             // on the free dofs; qp.alpha are the contact multipliers
+};
+
+class ElasticContactSolver {
+ public:
+  // `fixed_dofs`: dofs held at zero (Γ_D); they must prevent every rigid motion
+  // (std::invalid_argument otherwise). The mesh is copied; `solver` must outlive this.
+  ElasticContactSolver(Mesh mesh, const Lame& lame, const Foundation& foundation,
+                       int gamma_c_label, const std::vector<int>& fixed_dofs, QpSolver& solver);
+
+  ContactSolution solve(const Eigen::VectorXd& b_S, const ContactSolution* warm = nullptr);
+
+  const SparseMatrix& A_S() const { return A_S_; }
+  const ContactConstraint& contact() const { return contact_; }
+  const Mesh& mesh() const { return mesh_; }
+  QpSolver& qp_solver() { return solver_; }
+
+ private:
+  Mesh mesh_;
+  SparseMatrix A_S_;
+  ContactConstraint contact_;
+  std::vector<int> free_dofs_;
+  SparseMatrix A_free_, C_free_;
+  QpSolver& solver_;
+};
+
+// Both components of every vertex on `label` (a clamped side).
+std::vector<int> clamped_dofs(const Mesh& mesh, int label);
+
+}  // namespace fsi
+
+namespace fsi {
+
+// What summary.json reports of a contact state (SPEC §8).
+struct ContactSummary {
+  int active_nodes = 0;
+  double x_min = 0, x_max = 0;  // reference X1 extent of the active vertices (if any)
+  double max_multiplier = 0;    // largest α: peak discrete contact pressure
+};
+ContactSummary summarize_contact(const ElasticContactSolver& solver, const ContactSolution& s);
+
+// Mesh vertices whose contact row is active.
+std::vector<int> active_vertices(const ElasticContactSolver& solver, const ContactSolution& s);
+
+}  // namespace fsi

@@ -1,0 +1,116 @@
+#include "solid/elasticity.hpp"
+
+#include <vector>
+
+#include "fem/p1.hpp"
+#include "fem/quadrature.hpp"
+
+namespace fsi {
+
+Lame Lame::from_young_poisson(double E, double nu) {
+  return {nu * E / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
+}
+
+SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
+  const int nv = mesh.num_vertices();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(36 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const P1Triangle T(mesh, t);
+    const auto& tri = mesh.triangles[t];
+    // ε(φ_a e_c):ε(φ_b e_d) = ½(δ_cd ∇φ_a·∇φ_b + ∂_d φ_a ∂_c φ_b), div(φ_a e_c) = ∂_c φ_a.
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const double gradgrad = T.grad.row(a).dot(T.grad.row(b));
+        for (int c = 0; c < 2; ++c)
+          for (int d = 0; d < 2; ++d) {
+            const double k = lame.lambda * T.grad(a, c) * T.grad(b, d) +
+                             lame.mu * ((c == d ? gradgrad : 0.0) + T.grad(a, d) * T.grad(b, c));
+            entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * k);
+          }
+      }
+  }
+  SparseMatrix A(2 * nv, 2 * nv);
+  A.setFromTriplets(entries.begin(), entries.end());
+  return A;
+}
+
+SparseMatrix assemble_vector_mass(const Mesh& mesh) {
+  const int nv = mesh.num_vertices();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(18 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const double area = mesh.area(t);
+    const auto& tri = mesh.triangles[t];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)  // ∫ λ_a λ_b = |T|(1 + δ_ab)/12
+        for (int c = 0; c < 2; ++c)
+          entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], c, nv),
+                               area * (a == b ? 2.0 : 1.0) / 12.0);
+  }
+  SparseMatrix M(2 * nv, 2 * nv);
+  M.setFromTriplets(entries.begin(), entries.end());
+  return M;
+}
+
+SparseMatrix assemble_divergence(const Mesh& mesh) {
+  const int nv = mesh.num_vertices();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(18 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const P1Triangle T(mesh, t);
+    const auto& tri = mesh.triangles[t];
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 3; ++k)  // ∫ ∂_c λ_a λ_k = ∂_c λ_a |T|/3
+          entries.emplace_back(dof(tri[a], c, nv), tri[k], T.grad(a, c) * T.area / 3.0);
+  }
+  SparseMatrix B(2 * nv, nv);
+  B.setFromTriplets(entries.begin(), entries.end());
+  return B;
+}
+
+Eigen::VectorXd assemble_volume_load(const Mesh& mesh, const VectorField& f, int degree) {
+  const int nv = mesh.num_vertices();
+  const TriangleRule rule = triangle_rule(degree);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const P1Triangle T(mesh, t);
+    const auto& tri = mesh.triangles[t];
+    for (std::size_t q = 0; q < rule.w.size(); ++q) {
+      const Point fq = f(T.point(rule.lambda[q])) * (rule.w[q] * T.area);
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 2; ++c) b[dof(tri[a], c, nv)] += fq[c] * rule.lambda[q][a];
+    }
+  }
+  return b;
+}
+
+Eigen::VectorXd assemble_surface_load(const Mesh& mesh, int label, const VectorField& h,
+                                      int points) {
+  const int nv = mesh.num_vertices();
+  const LineRule rule = gauss_legendre(points);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
+  for (const auto& e : mesh.boundary_edges) {
+    if (e.label != label) continue;
+    const Point& p = mesh.vertices[e.v[0]];
+    const Point& q = mesh.vertices[e.v[1]];
+    const double length = (q - p).norm();
+    for (std::size_t k = 0; k < rule.x.size(); ++k) {
+      const double s = rule.x[k];
+      const Point hq = h((1 - s) * p + s * q) * (rule.w[k] * length);
+      for (int c = 0; c < 2; ++c) {
+        b[dof(e.v[0], c, nv)] += hq[c] * (1 - s);
+        b[dof(e.v[1], c, nv)] += hq[c] * s;
+      }
+    }
+  }
+  return b;
+}
+
+Eigen::VectorXd component(const Eigen::VectorXd& u, int c) {
+  const Eigen::Index nv = u.size() / 2;
+  return u.segment(c * nv, nv);
+}
+
+}  // namespace fsi
