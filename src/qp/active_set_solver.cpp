@@ -20,7 +20,7 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
     throw QpError("active-set: operator and constraint sizes do not match");
   A_ = A;
   C_ = C;
-  cholesky_ = std::make_unique<Eigen::CholmodDecomposition<SparseMatrix>>();
+  cholesky_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
   cholesky_->compute(A_);
   if (cholesky_->info() != Eigen::Success)
     throw QpError("active-set: Cholesky factorisation of A_S failed (not positive definite: "

@@ -37,7 +37,9 @@ class ActiveSetSolver final : public QpSolver {
   Eigen::VectorXd lawson_hanson(const Eigen::VectorXd& d, int& iterations) const;
 
   SparseMatrix A_, C_;
-  std::unique_ptr<Eigen::CholmodDecomposition<SparseMatrix>> cholesky_;
+  // LLᵀ, not CHOLMOD's automatic choice: its LDLᵀ accepts negative pivots, and A_S
+  // must be positive definite.
+  std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> cholesky_;
   Eigen::MatrixXd S_;
   Eigen::VectorXd kappa_;
   bool used_fallback_ = false;

@@ -1,0 +1,123 @@
+// Invalid input, end to end through the command line: one line on stderr naming
+// the file, the key and what is allowed; exit status 2; nothing written.
+#include <gtest/gtest.h>
+
+#include "support/cli.hpp"
+
+namespace fsi {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A valid contact-only case (§7.1, Fig. 5), to be spoiled one key at a time.
+const std::string kValid = R"(name = "t"
+[structure]
+L = 0.06
+H = 0.005
+E = 3.0e5
+nu = 0.3
+f = [0.0, -1.0e4]
+h = 0.0014
+[obstacle]
+x0 = 0.055
+y0 = -0.012
+r = 0.005
+gamma = 0.8
+)";
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  if (pos == std::string::npos) throw std::logic_error("test case: '" + from + "' not in case");
+  return text.replace(pos, from.size(), to);
+}
+
+struct BadInput {
+  std::string label;
+  std::string case_text;  // written to case.toml
+  std::string extra_args;
+  std::vector<std::string> expected;  // substrings of the message
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
+
+std::vector<BadInput> bad_inputs() {
+  const std::string fsi = kValid + "[fluid]\n";
+  return {
+      {"unknown_key", replace(kValid, "E = 3.0e5", "E = 3.0e5\nYoung = 1"), "", {"case.toml", "structure.Young", "not a known key"}},
+      {"unknown_section", kValid + "[solid]\nE = 1\n", "", {"case.toml", "solid", "allowed"}},
+      {"wrong_type", replace(kValid, "E = 3.0e5", "E = \"stiff\""), "", {"structure.E", "must be a number"}},
+      {"E_zero", replace(kValid, "E = 3.0e5", "E = 0"), "", {"structure.E", "out of range", "> 0"}},
+      {"E_negative", replace(kValid, "E = 3.0e5", "E = -3e5"), "", {"structure.E", "> 0"}},
+      {"E_nan", replace(kValid, "E = 3.0e5", "E = nan"), "", {"structure.E", "finite"}},
+      {"E_inf", replace(kValid, "E = 3.0e5", "E = inf"), "", {"structure.E", "finite"}},
+      {"nu_half", replace(kValid, "nu = 0.3", "nu = 0.5"), "", {"structure.nu", "(0, 0.5)"}},
+      {"nu_zero", replace(kValid, "nu = 0.3", "nu = 0"), "", {"structure.nu", "(0, 0.5)"}},
+      {"h_zero", replace(kValid, "h = 0.0014", "h = 0"), "", {"structure.h", "out of range"}},
+      {"h_negative", replace(kValid, "h = 0.0014", "h = -0.001"), "", {"structure.h"}},
+      {"h_too_small", replace(kValid, "h = 0.0014", "h = 1e-6"), "", {"structure.h", "triangles", "limit"}},
+      {"gamma_one", replace(kValid, "gamma = 0.8", "gamma = 1.0"), "", {"obstacle.gamma", "(0, 1)"}},
+      {"gamma_zero", replace(kValid, "gamma = 0.8", "gamma = 0"), "", {"obstacle.gamma", "(0, 1)"}},
+      {"r_negative", replace(kValid, "r = 0.005", "r = -0.005"), "", {"obstacle.r", "> 0"}},
+      {"gamma_c_outside", replace(kValid, "x0 = 0.055", "x0 = 0.058"), "", {"obstacle.x0", "Gamma_C", "allowed"}},
+      {"inside_obstacle", replace(kValid, "y0 = -0.012", "y0 = -0.002"), "", {"obstacle.y0", "inside the obstacle"}},
+      {"f_not_vector", replace(kValid, "f = [0.0, -1.0e4]", "f = -1.0e4"), "", {"structure.f", "two numbers"}},
+      {"f_three", replace(kValid, "f = [0.0, -1.0e4]", "f = [0, 1, 2]"), "", {"structure.f", "two numbers"}},
+      {"malformed_toml", replace(kValid, "E = 3.0e5", "E = = 3"), "", {"case.toml:"}},
+      {"bad_name", replace(kValid, "name = \"t\"", "name = \"../evil\""), "", {"name", "output directory"}},
+      {"section_not_table", "fluid = 3\n" + kValid, "", {"case.toml: fluid", "table"}},
+      {"omega_zero", fsi, "--set coupling.omega=0", {"--set coupling.omega", "(0, 1]"}},
+      {"omega_large", fsi, "--set coupling.omega=1.5", {"coupling.omega", "(0, 1]"}},
+      {"tol_zero", fsi, "--set coupling.tol=0", {"coupling.tol", "> 0"}},
+      {"eps_negative", fsi, "--set coupling.eps=-1e-5", {"coupling.eps", "> 0"}},
+      {"scheme_unknown", fsi, "--set coupling.scheme=newton", {"coupling.scheme", "constant", "aitken", "iqn-ils"}},
+      {"max_iterations_negative", fsi, "--set coupling.max_iterations=-1", {"coupling.max_iterations", "integer"}},
+      {"max_iterations_float", fsi, "--set coupling.max_iterations=2.5", {"coupling.max_iterations", "integer"}},
+      {"solver_unknown", kValid, "--set contact.solver=gurobi", {"contact.solver", "active-set", "ipopt"}},
+      {"mu_zero", fsi, "--set fluid.mu=0", {"fluid.mu", "> 0"}},
+      {"hF_too_large", fsi, "--set fluid.h=0.1", {"fluid.h", "(0, 0.005]"}},
+      {"obstacle_outside_box", fsi, "--set fluid.H2=0.01", {"obstacle", "outside the fluid box"}},
+      {"structure_longer_than_box", fsi, "--set structure.L=0.08 --set fluid.L1=0.07", {"structure.L", "fluid box"}},
+      {"structure_taller_than_box", fsi, "--set fluid.H1=0.004", {"structure.H", "fluid box"}},
+      {"fluid_mesh_too_fine", fsi, "--set fluid.h=1e-5", {"fluid.h", "limit"}},
+      {"chi_unknown", fsi, "--set fluid.chi=exact", {"fluid.chi", "barycentre", "area-fraction"}},
+      {"set_syntax", kValid, "--set omega=0.1", {"--set omega=0.1", "section.key=value"}},
+      {"set_unknown_key", kValid, "--set structure.EE=1", {"--set structure.EE", "not a known key"}},
+      {"missing_case_file", "", "missing.toml", {"missing.toml", "no such case file"}},
+      {"missing_mesh_file", replace(kValid, "h = 0.0014", "mesh = \"nowhere.msh\""), "", {"structure.mesh", "nowhere.msh", "no such mesh file"}},
+      {"truncated_mesh_file", replace(kValid, "h = 0.0014", "mesh = \"bad.msh\""), "", {"structure.mesh", "bad.msh"}},
+      {"mesh_without_groups", replace(kValid, "h = 0.0014", "mesh = \"nogroups.msh\""), "", {"structure.mesh", "Gamma_D"}},
+      {"output_not_writable", kValid + "[output]\ndir = \"/proc/fsicontact\"\n", "", {"output.dir", "/proc/fsicontact"}},
+      {"out_not_writable", kValid, "--out /proc/fsicontact", {"output.dir", "/proc/fsicontact"}},
+  };
+}
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputTest, IsRejectedWithExitStatus2AndNothingWritten) {
+  const BadInput& b = GetParam();
+  const fs::path dir = testing::scratch_dir("bad-" + b.label);
+  if (!b.case_text.empty()) testing::write_text(dir / "case.toml", b.case_text);
+  testing::write_text(dir / "bad.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n");
+  // A valid mesh file without physical groups.
+  testing::write_text(dir / "nogroups.msh",
+                      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n"
+                      "0 0 0\n1 0 0\n0 1 0\n$EndNodes\n$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n"
+                      "$EndElements\n");
+  const std::string target = b.case_text.empty() ? "" : "case.toml";
+  const bool own_out = b.extra_args.find("--out") != std::string::npos ||
+                       b.case_text.find("[output]") != std::string::npos;
+  const testing::CliRun r =
+      testing::run_cli("run " + target + " " + b.extra_args + (own_out ? "" : " --out result"), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const auto& s : b.expected) EXPECT_NE(r.err.find(s), std::string::npos) << "'" << s << "' not in: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "result")) << "output written for invalid input";
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, BadInputTest, ::testing::ValuesIn(bad_inputs()),
+                         [](const auto& param_info) { return param_info.param.label; });
+
+}  // namespace
+}  // namespace fsi
