@@ -6,7 +6,7 @@
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 #include "qp/qp_problem.hpp"
-#include "run/timer.hpp"
+#include "common/timer.hpp"
 #include "solid/contact_solver.hpp"
 
 namespace fsi {

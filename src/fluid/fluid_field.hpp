@@ -1,0 +1,38 @@
+// The discrete fluid fields as functions of position: v_h (P1 + bubble) and p_h
+// (P1), evaluated by point location; a point outside D_h takes the value at the
+// nearest point of D_h (SPEC §4 decision).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "fluid/penalised_stokes.hpp"
+#include "mesh/point_locator.hpp"
+
+namespace fsi {
+
+struct FluidValue {
+  Point v;
+  double p = 0;
+};
+
+class FluidField {
+ public:
+  // `locator` must be built on the fluid mesh; both must outlive this object.
+  FluidField(const PointLocator& locator, const FluidSolution& solution);
+
+  FluidValue at(const Point& x) const;
+  // Velocity and its gradient (row c = ∇v_c), bubble included, inside D_h.
+  FluidValue at(const Location& where) const;
+  Eigen::Matrix2d velocity_gradient(const Location& where) const;
+  const PointLocator& locator() const { return locator_; }
+
+ private:
+  const PointLocator& locator_;
+  const FluidSolution& solution_;
+};
+
+// ‖v_h‖_{L²(Ω)} over the region covered by `mesh` (a deformed structure mesh), by
+// a quadrature of degree `degree` on its triangles, v_h evaluated at the points.
+double velocity_l2_over(const FluidField& field, const Mesh& mesh, int degree = 5);
+
+}  // namespace fsi

@@ -1,0 +1,181 @@
+#include "fluid/penalised_stokes.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "fem/quadrature.hpp"
+#include "common/timer.hpp"
+
+namespace fsi {
+namespace {
+
+ElementLoad element_load(const P1Triangle& T, const VectorField& f, const TriangleRule& rule) {
+  ElementLoad load;
+  for (std::size_t q = 0; q < rule.w.size(); ++q) {
+    const Eigen::Vector3d& l = rule.lambda[q];
+    const Point fq = f(T.point(l)) * (rule.w[q] * T.area);
+    for (int c = 0; c < 2; ++c) {
+      for (int a = 0; a < 3; ++a) load.F_V[3 * c + a] += fq[c] * l[a];
+      load.F_b[c] += fq[c] * bubble_value(l);
+    }
+  }
+  return load;
+}
+
+}  // namespace
+
+PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
+                                 const FluidBoundaryConditions& bc, const std::string& solver)
+    : mesh_(mesh), mu_(mu), eps_(eps), solver_(make_sparse_solver(solver)) {
+  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
+  chi_ = Eigen::VectorXd::Zero(nt);
+  geometry_.reserve(nt);
+  loads_.reserve(nt);
+  const TriangleRule rule = triangle_rule(6);  // bubble (degree 3) × smooth f
+  for (int t = 0; t < nt; ++t) {
+    geometry_.emplace_back(mesh, t);
+    loads_.push_back(element_load(geometry_.back(), f, rule));
+  }
+
+  // Prescribed velocities on the Dirichlet labels.
+  z_fixed_ = Eigen::VectorXd::Zero(3 * nv);
+  std::vector<bool> fixed(3 * nv, false);
+  for (int label : bc.dirichlet_labels)
+    for (int v : mesh.vertices_on(label)) {
+      const Point g = bc.g(mesh.vertices[v]);
+      for (int c = 0; c < 2; ++c) {
+        fixed[c * nv + v] = true;
+        z_fixed_[c * nv + v] = g[c];
+      }
+    }
+  free_index_.assign(3 * nv, -1);
+  for (int d = 0; d < 3 * nv; ++d)
+    if (!fixed[d]) {
+      free_index_[d] = static_cast<int>(free_.size());
+      free_.push_back(d);
+    }
+
+  // Sparsity pattern of the free–free block, and each element entry's slot in it.
+  const int n = static_cast<int>(free_.size());
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(81 * static_cast<std::size_t>(nt));
+  for (const auto& tri : mesh.triangles)
+    for (int i = 0; i < 9; ++i)
+      for (int j = 0; j < 9; ++j) {
+        const int r = free_index_[fluid_dof(tri, i, nv)], c = free_index_[fluid_dof(tri, j, nv)];
+        if (r >= 0 && c >= 0) pattern.emplace_back(r, c, 0.0);
+      }
+  K_.resize(n, n);
+  K_.setFromTriplets(pattern.begin(), pattern.end());
+  K_.makeCompressed();
+  slot_.assign(81 * static_cast<std::size_t>(nt), -1);
+  const int* outer = K_.outerIndexPtr();
+  const int* inner = K_.innerIndexPtr();
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 9; ++i)
+      for (int j = 0; j < 9; ++j) {
+        const int r = free_index_[fluid_dof(mesh.triangles[t], i, nv)];
+        const int c = free_index_[fluid_dof(mesh.triangles[t], j, nv)];
+        if (r < 0 || c < 0) continue;
+        const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
+        slot_[81 * static_cast<std::size_t>(t) + 9 * i + j] = static_cast<int>(pos - inner);
+      }
+
+  // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
+  traction_load_ = Eigen::VectorXd::Zero(n);
+  const LineRule line = gauss_legendre(3);
+  for (const auto& [label, h] : bc.tractions)
+    for (const auto& e : mesh.edges_on(label)) {
+      const Point& a = mesh.vertices[e.v[0]];
+      const Point& b = mesh.vertices[e.v[1]];
+      for (std::size_t k = 0; k < line.x.size(); ++k) {
+        const double s = line.x[k];
+        const Point hq = h((1 - s) * a + s * b) * (line.w[k] * (b - a).norm());
+        for (int c = 0; c < 2; ++c) {
+          const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
+          if (r0 >= 0) traction_load_[r0] += hq[c] * (1 - s);
+          if (r1 >= 0) traction_load_[r1] += hq[c] * s;
+        }
+      }
+    }
+}
+
+void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
+  if (chi.size() != chi_.size()) throw std::invalid_argument("set_chi: one value per triangle");
+  if (chi != chi_) {
+    chi_ = chi;
+    chi_changed_ = true;
+  }
+}
+
+void PenalisedStokes::assemble() {
+  const int nv = mesh_.num_vertices();
+  double* values = K_.valuePtr();
+  std::fill(values, values + K_.nonZeros(), 0.0);
+  rhs_ = traction_load_;
+  for (int t = 0; t < mesh_.num_triangles(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const CondensedElement ce = condensed_mini_element(geometry_[t], mu_, chi_[t] / eps_, loads_[t]);
+    const int* slots = &slot_[81 * static_cast<std::size_t>(t)];
+    for (int i = 0; i < 9; ++i) {
+      const int r = free_index_[fluid_dof(tri, i, nv)];
+      if (r < 0) continue;
+      rhs_[r] += ce.F[i];
+      for (int j = 0; j < 9; ++j) {
+        if (slots[9 * i + j] >= 0)
+          values[slots[9 * i + j]] += ce.K(i, j);
+        else  // prescribed column: lift to the right-hand side
+          rhs_[r] -= ce.K(i, j) * z_fixed_[fluid_dof(tri, j, nv)];
+      }
+    }
+  }
+}
+
+const FluidSolution& PenalisedStokes::solve() {
+  if (solved_ && !chi_changed_) {
+    ++timing_.reused;
+    return solution_;
+  }
+  {
+    const Stopwatch clock;
+    assemble();
+    timing_.assembly += clock.elapsed();
+  }
+  {
+    const Stopwatch clock;
+    if (!analysed_) {
+      solver_->analyze(K_);
+      analysed_ = true;
+    }
+    solver_->factorize(K_);
+    timing_.factorization += clock.elapsed();
+    ++timing_.factorizations;
+  }
+  const Stopwatch clock;
+  const Eigen::VectorXd x = solver_->solve(rhs_);
+  if (!x.allFinite()) throw std::runtime_error("the Stokes solve produced a non-finite value");
+  Eigen::VectorXd z = z_fixed_;
+  for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];
+  const int nv = mesh_.num_vertices();
+  solution_.v1 = z.segment(0, nv);
+  solution_.v2 = z.segment(nv, nv);
+  solution_.p = z.segment(2 * nv, nv);
+  recover_bubbles(z);
+  timing_.solve += clock.elapsed();
+  solved_ = true;
+  chi_changed_ = false;
+  return solution_;
+}
+
+void PenalisedStokes::recover_bubbles(const Eigen::VectorXd& z) {
+  const int nv = mesh_.num_vertices();
+  solution_.bubble.resize(2, mesh_.num_triangles());
+  for (int t = 0; t < mesh_.num_triangles(); ++t) {
+    const BubbleBlock bb = bubble_block(geometry_[t], mu_, chi_[t] / eps_);
+    Vector9d local;
+    for (int k = 0; k < 9; ++k) local[k] = z[fluid_dof(mesh_.triangles[t], k, nv)];
+    solution_.bubble.col(t) = bb.A_bb_inv * (loads_[t].F_b - bb.E * local);
+  }
+}
+
+}  // namespace fsi

@@ -1,0 +1,88 @@
+// Steady Stokes on the fixed mesh of D with the structure as a penalty (paper §4,
+// eqs. 25–26, SPEC §3):
+//     ∫ 2μ ε(v):ε(w) − ∫ (div w) p + (1/ε) ∫ χ v·w = ∫ f·w (+ ∫_{Γ_N} h·w),
+//     −∫ (div v) q = 0,
+// mini element with condensed bubbles. The velocity is prescribed on the Dirichlet
+// labels; the rest of the boundary is natural (traction h, zero by default). There
+// is no mean-pressure constraint: with a traction boundary the pressure is unique.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "fluid/mini_element.hpp"
+#include "fluid/sparse_solver.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+using VectorField = std::function<Point(const Point&)>;
+
+struct FluidBoundaryConditions {
+  std::vector<int> dirichlet_labels;                 // velocity prescribed here
+  VectorField g = [](const Point&) { return Point(0, 0); };  // its value
+  std::vector<std::pair<int, VectorField>> tractions;  // σ n = h on these labels
+};
+
+// The discrete fluid state: P1 parts at the vertices, bubble coefficients per triangle.
+struct FluidSolution {
+  Eigen::VectorXd v1, v2, p;
+  Eigen::Matrix2Xd bubble;
+};
+
+struct FluidTiming {
+  double assembly = 0, factorization = 0, solve = 0;
+  int factorizations = 0, reused = 0;  // reused: χ unchanged, previous solution returned
+};
+
+class PenalisedStokes {
+ public:
+  PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
+                  const FluidBoundaryConditions& bc, const std::string& solver = "umfpack");
+
+  // χ per triangle (0 outside the structure, 1 inside; fractions allowed).
+  void set_chi(const Eigen::VectorXd& chi);
+  const Eigen::VectorXd& chi() const { return chi_; }
+  // Solves for the current χ; if χ did not change since the last solve, returns
+  // the previous solution without refactorising.
+  const FluidSolution& solve();
+
+  const Mesh& mesh() const { return mesh_; }
+  double mu() const { return mu_; }
+  double eps() const { return eps_; }
+  int unknowns() const { return static_cast<int>(free_.size()); }
+  long nonzeros() const { return K_.nonZeros(); }
+  const FluidTiming& timing() const { return timing_; }
+  std::string solver_name() const { return solver_->name(); }
+
+ private:
+  void assemble();
+  void recover_bubbles(const Eigen::VectorXd& z);
+
+  const Mesh& mesh_;
+  double mu_, eps_;
+  std::vector<ElementLoad> loads_;
+  std::vector<P1Triangle> geometry_;
+  Eigen::VectorXd chi_;
+  Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)
+  std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed
+  std::vector<int> free_;              // reduced index → full dof
+  std::vector<int> slot_;              // 81 per triangle: position in K_.valuePtr(), −1 if not free-free
+  Eigen::VectorXd traction_load_;      // ∫ h·w on the reduced dofs
+  Eigen::SparseMatrix<double> K_;
+  Eigen::VectorXd rhs_;
+  std::unique_ptr<SparseDirectSolver> solver_;
+  bool analysed_ = false, solved_ = false, chi_changed_ = true;
+  FluidSolution solution_;
+  FluidTiming timing_;
+};
+
+// Local dof k (0..8 = v1×3, v2×3, p×3) of triangle `tri` → full dof index.
+inline int fluid_dof(const std::array<int, 3>& tri, int k, int nv) {
+  return (k / 3) * nv + tri[k % 3];
+}
+
+}  // namespace fsi

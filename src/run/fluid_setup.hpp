@@ -1,0 +1,30 @@
+// Everything about the fluid that a run builds once: the fixed mesh of D, its point
+// locator, the χ rule, and the penalised Stokes system with the paper's boundary
+// conditions (SPEC §3).
+#pragma once
+
+#include <memory>
+
+#include "fluid/chi.hpp"
+#include "fluid/fluid_field.hpp"
+#include "fluid/penalised_stokes.hpp"
+#include "io/case.hpp"
+
+namespace fsi {
+
+struct FluidSetup {
+  std::unique_ptr<Mesh> mesh;  // owned here: the solver and locator refer to it
+  std::unique_ptr<PointLocator> locator;
+  std::unique_ptr<ChiComputer> chi;
+  std::unique_ptr<PenalisedStokes> stokes;
+};
+
+// Builds or reads the mesh of D; a bad user file is an InputError.
+Mesh make_fluid_mesh(const Case& c);
+
+// v = g on Σ4 (g = (0, Vmax·4x(x − L1)/L1²)), v = 0 on Σ1, Σ3, Σ5, Σ2 traction-free.
+FluidBoundaryConditions paper_boundary_conditions(const Mesh& mesh, const FluidParams& f);
+
+FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
+
+}  // namespace fsi
