@@ -5,8 +5,9 @@
 #include <iostream>
 
 #include "io/case.hpp"
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 #include "run/run_case.hpp"
+#include "run/sweep.hpp"
 
 namespace {
 
@@ -20,6 +21,21 @@ int run_command(const std::string& case_path, const std::vector<std::string>& se
   const fsi::RunResult r = fsi::run_case(c, options);
   std::cout << r.report << std::endl;
   return r.exit_status;
+}
+
+int sweep_command(const std::string& case_path, const std::string& rows, const std::vector<std::string>& sets,
+                  const std::string& out_dir, bool keep_outputs, bool quiet) {
+  fsi::SweepOptions options;
+  options.overrides = sets;
+  options.out_dir = out_dir;
+  options.keep_outputs = keep_outputs;
+  if (!quiet) options.progress = [](const std::string& line) { std::cerr << line << '\n'; };
+  const fsi::SweepResult r = fsi::run_sweep(case_path, rows, options);
+  std::cout << r.table_markdown << '\n'
+            << r.rows << " rows: " << r.converged << " converged, " << r.not_converged
+            << " reached the iteration limit, " << r.failed << " failed. Tables in " << r.out_dir
+            << "/ (table.md, table.csv; one directory per row)." << std::endl;
+  return r.failed > 0 ? 1 : 0;
 }
 
 }  // namespace
@@ -36,6 +52,15 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a case key: section.key=value")->type_name("KEY=VALUE");
   run->add_option("--out", out_dir, "output directory (overrides output.dir)");
   run->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  std::string sweep_case, sweep_rows;
+  bool keep_outputs = false;
+  CLI::App* sweep = app.add_subcommand("sweep", "run one case per row of a CSV file (e.g. the paper's Table 1)");
+  sweep->add_option("case", sweep_case, "base case file (TOML)")->required();
+  sweep->add_option("rows", sweep_rows, "CSV: headers are section.key overrides; paper.* columns are references")->required();
+  sweep->add_option("--set", sets, "override a key in every row: section.key=value")->type_name("KEY=VALUE");
+  sweep->add_option("--out", out_dir, "output directory (default out/<name>-sweep)");
+  sweep->add_flag("--keep-outputs", keep_outputs, "write each row's .vtu and .png too");
+  sweep->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -46,6 +71,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    if (sweep->parsed()) return sweep_command(sweep_case, sweep_rows, sets, out_dir, keep_outputs, quiet);
     return run_command(case_path, sets, out_dir, quiet);
   } catch (const fsi::InputError& e) {
     std::cerr << "fsicontact: error: " << e.what() << std::endl;

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fsi {
 namespace {

@@ -219,8 +219,10 @@ void Figure::legend(const std::vector<std::pair<Rgb, std::string>>& entries) {
   for (const auto& [c, text] : entries) {
     cairo_set_source_rgb(cr_, c[0], c[1], c[2]);
     cairo_rectangle(cr_, x, y - 9, 16, 10);
-    cairo_fill(cr_);
+    cairo_fill_preserve(cr_);
     cairo_set_source_rgb(cr_, 0, 0, 0);
+    cairo_set_line_width(cr_, 0.8);
+    cairo_stroke(cr_);
     cairo_move_to(cr_, x + 22, y);
     cairo_show_text(cr_, text.c_str());
     cairo_text_extents_t ext;

@@ -1,6 +1,6 @@
 #include "run/fluid_setup.hpp"
 
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
 
 namespace fsi {

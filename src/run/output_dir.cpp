@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 
 namespace fsi {
 

@@ -25,4 +25,8 @@ RunResult run_case(const Case& c, const RunOptions& options);
 // The contact-only problem of SPEC §2 (a case without [fluid]).
 RunResult run_contact_case(const Case& c, const RunOptions& options);
 
+// The coupled problem of SPEC §5; with coupling.max_iterations = 0 the fluid alone
+// around the structure at rest.
+RunResult run_fsi_case(const Case& c, const RunOptions& options);
+
 }  // namespace fsi

@@ -2,7 +2,7 @@
 #include <filesystem>
 
 #include "io/atomic_file.hpp"
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 #include "run/output_dir.hpp"
 #include "run/run_case.hpp"
 #include "run/structure_outputs.hpp"
@@ -86,8 +86,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
 }
 
 RunResult run_case(const Case& c, const RunOptions& options) {
-  if (!c.fluid) return run_contact_case(c, options);
-  throw SolverFailure("the coupled fluid-structure solver is not built yet");
+  return c.fluid ? run_fsi_case(c, options) : run_contact_case(c, options);
 }
 
 }  // namespace fsi

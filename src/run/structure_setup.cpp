@@ -1,6 +1,6 @@
 #include "run/structure_setup.hpp"
 
-#include "io/errors.hpp"
+#include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"

@@ -84,6 +84,12 @@ ContactSolution ElasticContactSolver::solve(const Eigen::VectorXd& b_S,
 
 namespace fsi {
 
+Eigen::VectorXd ElasticContactSolver::project(const Eigen::VectorXd& z) {
+  const Eigen::VectorXd slack = contact_.C_S * z - contact_.c_lb;
+  if (slack.size() == 0 || slack.minCoeff() >= 0) return z;
+  return solve(A_S_ * z).u;
+}
+
 std::vector<int> active_vertices(const ElasticContactSolver& solver, const ContactSolution& s) {
   std::vector<int> out;
   const auto& rows = solver.contact().row_vertex;

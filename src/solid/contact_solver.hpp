@@ -27,6 +27,10 @@ class ElasticContactSolver {
 
   ContactSolution solve(const Eigen::VectorXd& b_S, const ContactSolution* warm = nullptr);
 
+  // The feasible displacement nearest to z in the A_S-norm: z itself if C_S z ≥ c_lb,
+  // otherwise the QP with load A_S z (min ½(ξ−z)ᵀA_S(ξ−z) s.t. C_S ξ ≥ c_lb).
+  Eigen::VectorXd project(const Eigen::VectorXd& z);
+
   const SparseMatrix& A_S() const { return A_S_; }
   const ContactConstraint& contact() const { return contact_; }
   const Mesh& mesh() const { return mesh_; }

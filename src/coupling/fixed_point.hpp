@@ -1,0 +1,67 @@
+// The paper's fixed-point algorithm (§6, SPEC §5): given u^k,
+//   χ from φ^k(Ω_S0) → fluid solve → force (eq. 33) → contact QP → ũ^{k+1},
+//   stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}).
+// State lives here; the pieces it calls are built once by the caller.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "coupling/force_transfer.hpp"
+#include "coupling/relaxation.hpp"
+#include "fluid/chi.hpp"
+#include "fluid/penalised_stokes.hpp"
+#include "solid/contact_solver.hpp"
+
+namespace fsi {
+
+struct IterationRecord {
+  int iteration = 0;          // 1, 2, ... (passes through steps 2–5)
+  double increment = 0;       // ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)}
+  double omega = std::numeric_limits<double>::quiet_NaN();  // factor applied after this pass
+                                                            // (NaN: none, or an IQN-ILS step)
+  int active_nodes = 0;
+  int chi_triangles = 0;      // fluid triangles with χ > 0
+  bool fluid_reused = false;  // χ unchanged: previous fluid solution reused
+  double t_chi = 0, t_fluid = 0, t_transfer = 0, t_structure = 0;
+};
+
+struct CouplingResult {
+  bool converged = false;
+  int iterations = 0;
+  double final_increment = 0;
+  ContactSolution structure;   // the last ũ (the solution if converged)
+  std::vector<IterationRecord> history;
+  int projections = 0;         // infeasible accelerated updates projected back
+};
+
+class FixedPointCoupling {
+ public:
+  struct Parts {
+    ElasticContactSolver& structure;
+    const Eigen::VectorXd& b_applied;  // f_S and h_N part of b_S
+    PenalisedStokes& fluid;
+    const PointLocator& fluid_locator;
+    const ChiComputer& chi;
+    const FluidForce& force;
+    Relaxation& relaxation;
+  };
+  FixedPointCoupling(Parts parts, double tol, int max_iterations);
+
+  // One line per iteration (for stderr).
+  std::function<void(const std::string&)> progress;
+
+  // Throws SolverFailure naming the phase and iteration if a solve fails or a field
+  // becomes non-finite.
+  CouplingResult run();
+
+ private:
+  Parts p_;
+  double tol_;
+  int max_iterations_;
+  SparseMatrix M_;  // L²(Ω_S0) mass, for the stopping test
+};
+
+}  // namespace fsi

@@ -1,0 +1,59 @@
+#include "coupling/force_transfer.hpp"
+
+#include "fem/p1.hpp"
+#include "fem/quadrature.hpp"
+
+namespace fsi {
+
+SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
+                                         const Eigen::VectorXd& u) {
+  const int nv = reference.num_vertices();
+  SampledFluid s{Eigen::VectorXd(2 * nv), Eigen::VectorXd(nv)};
+  for (int i = 0; i < nv; ++i) {
+    const Point x = reference.vertices[i] + Point(u[i], u[nv + i]);
+    const FluidValue value = field.at(x);
+    s.v[i] = value.v.x();
+    s.v[nv + i] = value.v.y();
+    s.p[i] = value.p;
+  }
+  return s;
+}
+
+FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F)
+    : mesh_(reference),
+      eps_(eps),
+      f_F_(f_F),
+      K_mu_(assemble_elasticity(reference, Lame{0.0, mu_F})),  // λ = 0, μ = μ_F: 2μ_F ε:ε
+      B_(assemble_divergence(reference)),
+      M_(assemble_vector_mass(reference)) {}
+
+FluidForce::Terms FluidForce::terms(const SampledFluid& s, const Eigen::VectorXd& u) const {
+  Terms t;
+  t.viscous = K_mu_ * s.v;
+  t.pressure = -(B_ * s.p);
+  t.penalty = (M_ * s.v) / eps_;
+  // −∫ f_F(φ(X))·w dX, φ(X) = X + u(X) interpolated at the quadrature points.
+  const int nv = mesh_.num_vertices();
+  const TriangleRule rule = triangle_rule(2);
+  t.body = Eigen::VectorXd::Zero(2 * nv);
+  for (int tri = 0; tri < mesh_.num_triangles(); ++tri) {
+    const P1Triangle T(mesh_, tri);
+    const auto& v = mesh_.triangles[tri];
+    for (std::size_t q = 0; q < rule.w.size(); ++q) {
+      const Eigen::Vector3d& l = rule.lambda[q];
+      Point x = T.point(l);
+      for (int a = 0; a < 3; ++a) x += l[a] * Point(u[v[a]], u[nv + v[a]]);
+      const Point f = f_F_(x) * (rule.w[q] * T.area);
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 2; ++c) t.body[dof(v[a], c, nv)] -= f[c] * l[a];
+    }
+  }
+  return t;
+}
+
+Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
+  const Terms t = terms(s, u);
+  return t.viscous + t.pressure + t.penalty + t.body;
+}
+
+}  // namespace fsi

@@ -1,0 +1,49 @@
+// The fluid force on the structure (paper eqs. 32–33, SPEC §4), small-displacement
+// form: with ṽ = v_h∘φ and p̃ = p_h∘φ taken as P1 fields on the reference mesh,
+//     F(w) = ∫ 2μ_F ε_X(ṽ):ε_X(w) − ∫ (div_X w) p̃ + (1/ε) ∫ ṽ·w − ∫ (f_F∘φ)·w,
+// all integrals over Ω_S0. The first three are fixed matrices of the reference mesh
+// (built once) applied to ṽ, p̃; the last is integrated at deformed positions.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "fluid/fluid_field.hpp"
+#include "mesh/mesh.hpp"
+#include "solid/elasticity.hpp"
+
+namespace fsi {
+
+// ṽ, p̃: the fluid fields at the deformed positions X_i + u(X_i) of the structure's
+// vertices (outside D_h: at the nearest point of D_h).
+struct SampledFluid {
+  Eigen::VectorXd v;  // 2nv, paper ordering
+  Eigen::VectorXd p;  // nv
+};
+SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
+                                         const Eigen::VectorXd& u);
+
+class FluidForce {
+ public:
+  FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F);
+
+  // The load vector of eq. (33)'s last four terms, for the sampled fields and the
+  // displacement u defining φ.
+  Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
+
+  // The four terms separately, for checks: viscous, pressure, penalty, body force.
+  struct Terms {
+    Eigen::VectorXd viscous, pressure, penalty, body;
+  };
+  Terms terms(const SampledFluid& s, const Eigen::VectorXd& u) const;
+
+ private:
+  const Mesh& mesh_;
+  double eps_;
+  VectorField f_F_;
+  SparseMatrix K_mu_;  // ∫ 2μ_F ε(φ_j):ε(φ_i)
+  SparseMatrix B_;     // ∫ (div φ_i) q_k
+  SparseMatrix M_;     // ∫ φ_j·φ_i
+};
+
+}  // namespace fsi

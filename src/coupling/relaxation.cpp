@@ -1,0 +1,143 @@
+#include "coupling/relaxation.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <stdexcept>
+
+namespace fsi {
+namespace {
+
+class ConstantRelaxation final : public Relaxation {
+ public:
+  explicit ConstantRelaxation(double omega) : omega_(omega) {}
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+    return u + omega_ * (H_u - u);  // convex combination of feasible fields: feasible
+  }
+  double omega() const override { return omega_; }
+  std::string name() const override { return "constant"; }
+
+ private:
+  double omega_;
+};
+
+class AitkenRelaxation final : public Relaxation {
+ public:
+  AitkenRelaxation(const RelaxationOptions& o, const Eigen::SparseMatrix<double>& M)
+      : omega_(o.omega0), omega_min_(o.omega_min), M_(M) {}
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+    const Eigen::VectorXd r = H_u - u;
+    if (previous_r_.size() == r.size()) {
+      const Eigen::VectorXd dr = r - previous_r_;
+      const double denominator = dr.dot(M_ * dr);
+      // ‖Δr‖ ≈ 0 means the residual stopped changing: keep ω.
+      if (denominator > 1e-30 * std::max(r.dot(M_ * r), 1e-300)) {
+        const double w = -omega_ * previous_r_.dot(M_ * dr) / denominator;
+        omega_ = std::isfinite(w) ? std::clamp(w, omega_min_, 1.0) : omega_;
+      }
+    }
+    previous_r_ = r;
+    return u + omega_ * r;
+  }
+  double omega() const override { return omega_; }
+  std::string name() const override { return "aitken"; }
+
+ private:
+  double omega_, omega_min_;
+  Eigen::SparseMatrix<double> M_;
+  Eigen::VectorXd previous_r_;
+};
+
+class IqnIlsRelaxation final : public Relaxation {
+ public:
+  IqnIlsRelaxation(const RelaxationOptions& o, const Eigen::SparseMatrix<double>& M)
+      : options_(o), weights_(Eigen::VectorXd(M * Eigen::VectorXd::Ones(M.rows())).cwiseSqrt()) {}
+
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+    const Eigen::VectorXd r = H_u - u;
+    if (previous_r_.size() == r.size()) {
+      V_.push_front(r - previous_r_);
+      W_.push_front(H_u - previous_H_);
+      if (static_cast<int>(V_.size()) > options_.max_columns) {
+        V_.pop_back();
+        W_.pop_back();
+      }
+    }
+    previous_r_ = r;
+    previous_H_ = H_u;
+    if (V_.empty()) {
+      omega_ = options_.omega0;
+      return u + options_.omega0 * r;  // first step: constant relaxation
+    }
+    omega_ = std::numeric_limits<double>::quiet_NaN();
+    Eigen::VectorXd z = H_u + W_matrix() * least_squares(r);
+    if (project) {
+      const Eigen::VectorXd feasible = project(z);
+      if ((feasible - z).norm() > 0) ++projections_;
+      z = feasible;
+    }
+    return z;
+  }
+  double omega() const override { return omega_; }
+  std::string name() const override { return "iqn-ils"; }
+
+ private:
+  // α = argmin ‖V α + r‖ in the lumped-mass norm, by modified Gram–Schmidt on the
+  // columns newest first; a column whose new part is below `filter` of its norm is
+  // nearly dependent on newer ones and is dropped for good (the QR filter).
+  Eigen::VectorXd least_squares(const Eigen::VectorXd& r) {
+    std::vector<Eigen::VectorXd> Q;
+    std::vector<std::size_t> kept;
+    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(V_.size()), static_cast<Eigen::Index>(V_.size()));
+    for (std::size_t j = 0; j < V_.size(); ++j) {
+      Eigen::VectorXd q = weights_.cwiseProduct(V_[j]);
+      const double norm0 = q.norm();
+      Eigen::VectorXd coeffs(static_cast<Eigen::Index>(Q.size()));
+      for (std::size_t i = 0; i < Q.size(); ++i) {
+        coeffs[static_cast<Eigen::Index>(i)] = Q[i].dot(q);
+        q -= coeffs[static_cast<Eigen::Index>(i)] * Q[i];
+      }
+      const double rjj = q.norm();
+      if (!(rjj > options_.filter * norm0)) continue;
+      const Eigen::Index col = static_cast<Eigen::Index>(Q.size());
+      R.block(0, col, col, 1) = coeffs;
+      R(col, col) = rjj;
+      Q.push_back(q / rjj);
+      kept.push_back(j);
+    }
+    // Drop the filtered columns from the history.
+    std::deque<Eigen::VectorXd> V, W;
+    for (std::size_t j : kept) V.push_back(V_[j]), W.push_back(W_[j]);
+    V_.swap(V);
+    W_.swap(W);
+    const Eigen::Index n = static_cast<Eigen::Index>(Q.size());
+    Eigen::VectorXd rhs(n);
+    const Eigen::VectorXd wr = weights_.cwiseProduct(r);
+    for (Eigen::Index i = 0; i < n; ++i) rhs[i] = -Q[static_cast<std::size_t>(i)].dot(wr);
+    return R.topLeftCorner(n, n).triangularView<Eigen::Upper>().solve(rhs);
+  }
+  Eigen::MatrixXd W_matrix() const {
+    Eigen::MatrixXd W(W_.empty() ? 0 : W_[0].size(), static_cast<Eigen::Index>(W_.size()));
+    for (std::size_t j = 0; j < W_.size(); ++j) W.col(static_cast<Eigen::Index>(j)) = W_[j];
+    return W;
+  }
+
+  RelaxationOptions options_;
+  Eigen::VectorXd weights_;  // sqrt of the lumped mass
+  std::deque<Eigen::VectorXd> V_, W_;
+  Eigen::VectorXd previous_r_, previous_H_;
+  double omega_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Relaxation> make_relaxation(const std::string& scheme, const RelaxationOptions& options,
+                                            const Eigen::SparseMatrix<double>& M) {
+  if (scheme == "constant") return std::make_unique<ConstantRelaxation>(options.omega0);
+  if (scheme == "aitken") return std::make_unique<AitkenRelaxation>(options, M);
+  if (scheme == "iqn-ils") return std::make_unique<IqnIlsRelaxation>(options, M);
+  throw std::invalid_argument("unknown relaxation scheme '" + scheme + "'");
+}
+
+}  // namespace fsi

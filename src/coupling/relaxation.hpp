@@ -1,0 +1,48 @@
+// The update u_{k+1} from u_k and ũ_k = H(u_k) (one fluid solve, force and contact
+// QP), SPEC §5. The fixed-point loop holds a Relaxation and does not know which:
+//   constant  u_{k+1} = u_k + ω r_k                        (the paper)
+//   aitken    ω_k = −ω_{k−1} ⟨r_{k−1}, r_k − r_{k−1}⟩ / ‖r_k − r_{k−1}‖², clamped to
+//             [0.01, 1] so the iterate stays a convex combination (Küttler & Wall 2008)
+//   iqn-ils   u_{k+1} = ũ_k + W α, α = argmin ‖V α + r_k‖, V, W the differences of
+//             residuals and of H (Degroote et al. 2009); projected back onto the
+//             feasible set when it leaves it
+// with r_k = ũ_k − u_k. Inner products are those of L²(Ω_S0) (the mass matrix M).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace fsi {
+
+class Relaxation {
+ public:
+  virtual ~Relaxation() = default;
+  virtual Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) = 0;
+  // The relaxation factor of the last step (IQN-ILS: NaN after its first step).
+  virtual double omega() const = 0;
+  virtual std::string name() const = 0;
+  // How many updates left the feasible set and were projected back.
+  int projections() const { return projections_; }
+
+  // Maps a displacement to the nearest feasible one (A_S-norm); set by the loop.
+  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> project;
+
+ protected:
+  int projections_ = 0;
+};
+
+struct RelaxationOptions {
+  double omega0 = 0.1;
+  int max_columns = 5;          // IQN-ILS: kept difference pairs (chosen on Table 1, docs/validation.md)
+  double filter = 1e-2;         // IQN-ILS: drop a column if its new part < filter·its norm
+  double omega_min = 1e-2;      // Aitken: clamp to [omega_min, 1]
+};
+
+// scheme: "constant" | "aitken" | "iqn-ils"; M: the inner product's matrix.
+std::unique_ptr<Relaxation> make_relaxation(const std::string& scheme, const RelaxationOptions& options,
+                                            const Eigen::SparseMatrix<double>& M);
+
+}  // namespace fsi

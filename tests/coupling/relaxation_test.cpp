@@ -1,0 +1,109 @@
+// The relaxation schemes on linear maps H(u) = A u + b, where their behaviour is
+// known: constant ω converges linearly, Aitken's secant step is exact for
+// H = a·I + b, IQN-ILS (equivalent to GMRES here) needs at most n + 1 evaluations.
+#include "coupling/relaxation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+namespace fsi {
+namespace {
+
+Eigen::SparseMatrix<double> identity(int n) {
+  Eigen::SparseMatrix<double> I(n, n);
+  I.setIdentity();
+  return I;
+}
+
+// Iterates u ← next(u, H(u)) from 0 until ‖H(u) − u‖ < tol; returns the count of H
+// evaluations, or −1.
+int iterations_to_converge(Relaxation& relax, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                           double tol, int max_it, Eigen::VectorXd& u) {
+  u = Eigen::VectorXd::Zero(b.size());
+  for (int k = 1; k <= max_it; ++k) {
+    const Eigen::VectorXd H = A * u + b;
+    if ((H - u).norm() < tol) return k;
+    u = relax.next(u, H);
+  }
+  return -1;
+}
+
+TEST(Relaxation, ConstantConvergesLinearlyToTheFixedPoint) {
+  const int n = 5;
+  const Eigen::MatrixXd A = 0.5 * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1, 2);
+  auto relax = make_relaxation("constant", {.omega0 = 0.5}, identity(n));
+  Eigen::VectorXd u;
+  const int k = iterations_to_converge(*relax, A, b, 1e-10, 200, u);
+  // Contraction factor 1 − ω(1 − a) = 0.75: about log(1e-10)/log(0.75) ≈ 80 steps.
+  EXPECT_GT(k, 60);
+  EXPECT_LT(k, 100);
+  EXPECT_LT((u - 2 * b).norm(), 1e-9);
+  EXPECT_EQ(relax->omega(), 0.5);
+}
+
+TEST(Relaxation, AitkenSecantStepIsExactForAScaledIdentity) {
+  const int n = 5;
+  // a = −0.5: the optimal ω = 1/(1 − a) = 2/3 lies in (0, 1].
+  const Eigen::MatrixXd A = -0.5 * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1, 2);
+  auto relax = make_relaxation("aitken", {.omega0 = 0.1}, identity(n));
+  Eigen::VectorXd u;
+  const int k = iterations_to_converge(*relax, A, b, 1e-12, 50, u);
+  EXPECT_LE(k, 3);
+  EXPECT_NEAR(relax->omega(), 2.0 / 3.0, 1e-12);
+  auto constant = make_relaxation("constant", {.omega0 = 0.1}, identity(n));
+  EXPECT_GT(iterations_to_converge(*constant, A, b, 1e-12, 1000, u), 100);
+}
+
+TEST(Relaxation, AitkenKeepsOmegaInTheUnitInterval) {
+  const int n = 4;
+  const Eigen::MatrixXd A = 0.9 * Eigen::MatrixXd::Identity(n, n);  // optimal ω = 10: clamped to 1
+  auto relax = make_relaxation("aitken", {.omega0 = 0.5}, identity(n));
+  Eigen::VectorXd u;
+  iterations_to_converge(*relax, A, Eigen::VectorXd::Ones(n), 1e-10, 500, u);
+  EXPECT_EQ(relax->omega(), 1.0);
+}
+
+TEST(Relaxation, IqnIlsConvergesInAtMostNPlusOneEvaluations) {
+  const int n = 8;
+  std::mt19937 gen(3);
+  std::normal_distribution<double> N(0, 1);
+  // A non-normal map whose plain iteration diverges (spectral radius > 1).
+  Eigen::MatrixXd A = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return 0.6 * N(gen); });
+  const Eigen::VectorXd b = Eigen::VectorXd::NullaryExpr(n, [&] { return N(gen); });
+  ASSERT_GT(A.eigenvalues().cwiseAbs().maxCoeff(), 1.0);
+  auto relax = make_relaxation("iqn-ils", {.omega0 = 0.1, .max_columns = 20, .filter = 1e-8}, identity(n));
+  Eigen::VectorXd u;
+  const int k = iterations_to_converge(*relax, A, b, 1e-8, 50, u);
+  ASSERT_GT(k, 0);
+  EXPECT_LE(k, n + 2);  // n + 1 H-evaluations to build the space, one to confirm
+  const Eigen::VectorXd exact = (Eigen::MatrixXd::Identity(n, n) - A).lu().solve(b);
+  EXPECT_LT((u - exact).norm(), 1e-7 * exact.norm());
+}
+
+TEST(Relaxation, IqnIlsProjectsAnInfeasibleUpdateAndCountsIt) {
+  const int n = 3;
+  const Eigen::MatrixXd A = -0.5 * Eigen::MatrixXd::Identity(n, n);
+  auto relax = make_relaxation("iqn-ils", {.omega0 = 0.1}, identity(n));
+  int calls = 0;
+  relax->project = [&](const Eigen::VectorXd& z) {  // feasible set: u ≤ 0.5 componentwise
+    ++calls;
+    return Eigen::VectorXd(z.cwiseMin(0.5));
+  };
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);  // fixed point 2/3 > 0.5: infeasible
+  for (int k = 0; k < 6; ++k) u = relax->next(u, A * u + b);
+  EXPECT_GT(calls, 0);
+  EXPECT_GT(relax->projections(), 0);
+  EXPECT_LE(u.maxCoeff(), 0.5);
+}
+
+TEST(Relaxation, UnknownSchemeIsRejected) {
+  EXPECT_THROW(make_relaxation("anderson", {}, identity(2)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fsi
