@@ -1,0 +1,107 @@
+// The coupled run end to end through the command line (coarse §7.2 case): every
+// output and summary key of SPEC §8 and issue 4, and exit status 3 with outputs
+// written when the iteration limit is reached.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/cli.hpp"
+
+namespace fsi {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kCoarse = "--set fluid.h=0.02 --set structure.h=0.03";
+
+TEST(FsiRun, WritesEveryOutput) {
+  const fs::path dir = testing::scratch_dir("fsi-run");
+  const testing::CliRun r = testing::run_cli("run " + kCoarse + " --set coupling.scheme=aitken --out res", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("[coupling] it   1:"), std::string::npos) << "no progress line per iteration";
+  for (const char* f : {"summary.json", "history.csv", "fluid.vtu", "structure.vtu", "fsi.pvd", "fsi.png",
+                        "structure.png", "case.toml"})
+    EXPECT_TRUE(fs::exists(dir / "res" / f)) << f;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  for (const char* key : {"name", "parameters", "mesh", "converged", "iterations", "final_increment_l2",
+                          "fluid_velocity_l2_in_structure", "fluid_velocity_l2_in_structure_over_eps",
+                          "max_displacement", "min_displacement_y", "contact", "kkt", "timing_s", "relaxation"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* part : {"structure", "fluid"}) {
+    EXPECT_TRUE(j["mesh"][part].contains("triangles")) << part;
+    EXPECT_TRUE(j["mesh"][part].contains("vertices")) << part;
+  }
+  for (const char* key : {"total", "mesh", "fluid", "structure", "transfer"})
+    EXPECT_TRUE(j["timing_s"].contains(key)) << key;
+  EXPECT_EQ(j["relaxation"]["scheme"], "aitken");
+  EXPECT_EQ(j["converged"], true);
+  EXPECT_NEAR(j["fluid_velocity_l2_in_structure_over_eps"].get<double>(),
+              j["fluid_velocity_l2_in_structure"].get<double>() / 1e-5, 1e-9);
+  // history.csv: a header and one line per iteration.
+  const std::string history = testing::slurp(dir / "res/history.csv");
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), j["iterations"].get<int>() + 1);
+  EXPECT_NE(testing::slurp(dir / "res/fsi.pvd").find("structure.vtu"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(FsiRun, IterationLimitGivesExitStatus3WithOutputs) {
+  const fs::path dir = testing::scratch_dir("fsi-limit");
+  const testing::CliRun r = testing::run_cli("run " + kCoarse + " --set coupling.max_iterations=2 --out res -q", dir);
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.out.find("NOT converged"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  EXPECT_EQ(j["converged"], false);
+  EXPECT_EQ(j["iterations"], 2);
+  EXPECT_TRUE(fs::exists(dir / "res/fsi.png"));
+  fs::remove_all(dir);
+}
+
+TEST(FsiRun, FluidAloneWhenTheCouplingIsSwitchedOff) {
+  const fs::path dir = testing::scratch_dir("fluid-only");
+  const testing::CliRun r = testing::run_cli("run " + kCoarse + " --set coupling.max_iterations=0 --out res -q", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"summary.json", "fluid.vtu", "fluid.png"}) EXPECT_TRUE(fs::exists(dir / "res" / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / "res/structure.vtu"));
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  EXPECT_EQ(j["problem"], "fluid");
+  EXPECT_GT(j["fluid"]["unknowns"].get<int>(), 1000);
+  EXPECT_GT(j["fluid"]["factorization_s"].get<double>(), 0.0);
+  EXPECT_TRUE(j.contains("fluid_velocity_l2_in_structure"));
+  const std::string vtu = testing::slurp(dir / "res/fluid.vtu");
+  for (const char* field : {"velocity", "pressure", "chi", "velocity_magnitude"})
+    EXPECT_NE(vtu.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  fs::remove_all(dir);
+}
+
+TEST(FsiRun, SweepMarksRowsAndWritesTables) {
+  const fs::path dir = testing::scratch_dir("sweep");
+  testing::write_text(dir / "rows.csv",
+                      "coupling.eps,coupling.max_iterations,paper.k\n1e-4,100,16\n1e-5,2,32\n");
+  const testing::CliRun r = testing::run_cli("sweep '" + std::string(FSICONTACT_SOURCE_DIR) +
+                                                 "/cases/paper-7.2.toml' rows.csv " + kCoarse + " --out tab -q",
+                                             dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string md = testing::slurp(dir / "tab/table.md");
+  EXPECT_NE(md.find("| converged |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| not converged |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 16 |"), std::string::npos) << "paper column missing: " << md;
+  const std::string csv = testing::slurp(dir / "tab/table.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_TRUE(fs::exists(dir / "tab/row-01/summary.json"));
+  fs::remove_all(dir);
+}
+
+TEST(FsiRun, SweepWithABadRowWritesNothing) {
+  const fs::path dir = testing::scratch_dir("sweep-bad");
+  testing::write_text(dir / "rows.csv", "coupling.eps,coupling.omega\n1e-4,0.1\n1e-5,7\n");
+  const testing::CliRun r = testing::run_cli("sweep '" + std::string(FSICONTACT_SOURCE_DIR) +
+                                                 "/cases/paper-7.2.toml' rows.csv --out tab -q",
+                                             dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("rows.csv: row 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("coupling.omega"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "tab"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fsi
