@@ -103,5 +103,23 @@ TEST(FsiRun, SweepWithABadRowWritesNothing) {
   fs::remove_all(dir);
 }
 
+// A user's .msh of D (cases/meshes/paper-7.2-box-h0.02.msh, written by Gmsh with
+// the same size) gives the same answer as the generated mesh.
+TEST(FsiRun, UserFluidMeshGivesTheSameAnswerAsTheGeneratedOne) {
+  const fs::path dir = testing::scratch_dir("fluid-msh");
+  const std::string src = FSICONTACT_SOURCE_DIR;
+  const testing::CliRun a = testing::run_cli("run '" + src + "/cases/paper-7.2-box-msh.toml' --out a -q", dir);
+  const testing::CliRun b = testing::run_cli(
+      "run '" + src + "/cases/paper-7.2.toml' " + kCoarse + " --set coupling.scheme=aitken --out b -q", dir);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  const auto ja = nlohmann::json::parse(testing::slurp(dir / "a/summary.json"));
+  const auto jb = nlohmann::json::parse(testing::slurp(dir / "b/summary.json"));
+  EXPECT_EQ(ja["mesh"]["fluid"]["triangles"], jb["mesh"]["fluid"]["triangles"]);
+  EXPECT_EQ(ja["iterations"], jb["iterations"]);
+  EXPECT_NEAR(ja["max_displacement"].get<double>(), jb["max_displacement"].get<double>(), 1e-12);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsi
