@@ -108,6 +108,20 @@ void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
   }
 }
 
+void PenalisedStokes::set_eps(double eps) {
+  if (eps != eps_) {
+    eps_ = eps;
+    chi_changed_ = true;
+  }
+}
+
+void PenalisedStokes::reset() {
+  solved_ = false;
+  chi_changed_ = true;
+  chi_.setZero();
+  timing_ = FluidTiming{};
+}
+
 void PenalisedStokes::assemble() {
   const int nv = mesh_.num_vertices();
   double* values = K_.valuePtr();

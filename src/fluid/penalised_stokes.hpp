@@ -45,6 +45,10 @@ class PenalisedStokes {
 
   // χ per triangle (0 outside the structure, 1 inside; fractions allowed).
   void set_chi(const Eigen::VectorXd& chi);
+  // A new penalty ε (the pattern and its symbolic analysis are kept).
+  void set_eps(double eps);
+  // Forget the last solution (the next solve() refactorises), e.g. for a new run.
+  void reset();
   const Eigen::VectorXd& chi() const { return chi_; }
   // Solves for the current χ; if χ did not change since the last solve, returns
   // the previous solution without refactorising.

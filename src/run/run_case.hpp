@@ -9,8 +9,11 @@
 
 namespace fsi {
 
+class SetupCache;
+
 struct RunOptions {
   std::function<void(const std::string&)> progress;  // one line per solver iteration
+  SetupCache* cache = nullptr;  // reuse meshes and setups across runs (sweeps)
 };
 
 struct RunResult {

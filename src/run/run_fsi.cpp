@@ -12,6 +12,7 @@
 #include "run/fluid_setup.hpp"
 #include "run/output_dir.hpp"
 #include "run/run_case.hpp"
+#include "run/setup_cache.hpp"
 #include "run/structure_outputs.hpp"
 #include "run/structure_setup.hpp"
 
@@ -65,25 +66,28 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
       if (options.progress) options.progress(prefix + line);
     };
   };
-  Mesh structure_mesh, fluid_mesh;
+  SetupCache local_cache;
+  SetupCache& cache = options.cache ? *options.cache : local_cache;
+  MeshStatistics s_stats, f_stats;
   {
     ScopedPhase phase(times, "mesh");
-    structure_mesh = make_structure_mesh(c);
-    fluid_mesh = make_fluid_mesh(c);
+    s_stats = statistics(cache.structure_mesh(c));
+    f_stats = statistics(cache.fluid_mesh(c));
   }
-  const MeshStatistics s_stats = statistics(structure_mesh), f_stats = statistics(fluid_mesh);
   prepare_output_dir(c.output.dir, c.source);
 
-  StructureSetup s;
+  StructureSetup* s_ptr = nullptr;
   {
     ScopedPhase phase(times, "structure");
-    s = make_structure(c, std::move(structure_mesh), nullptr);  // QP lines would swamp stderr
+    s_ptr = &cache.structure(c);  // no QP progress lines: one per iteration would swamp stderr
   }
-  FluidSetup f;
+  FluidSetup* f_ptr = nullptr;
   {
     ScopedPhase phase(times, "fluid");
-    f = make_fluid(c, std::move(fluid_mesh), c.coupling.eps);
+    f_ptr = &cache.fluid(c);
   }
+  StructureSetup& s = *s_ptr;
+  FluidSetup& f = *f_ptr;
   const Mesh& ref = s.mesh();
   const bool fluid_only = c.coupling.max_iterations == 0;
 

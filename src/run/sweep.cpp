@@ -11,6 +11,7 @@
 #include "common/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "run/output_dir.hpp"
+#include "run/setup_cache.hpp"
 
 namespace fsi {
 namespace {
@@ -106,6 +107,43 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
   }
   prepare_output_dir(result.out_dir, rows_csv);
 
+  // Run rows grouped by fluid mesh (so each mesh and its setup is built once),
+  // report them in the file's order.
+  std::vector<std::size_t> order(rows.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const std::string ka = rows[a].c.fluid ? fluid_mesh_key(rows[a].c) : "";
+    const std::string kb = rows[b].c.fluid ? fluid_mesh_key(rows[b].c) : "";
+    return ka < kb;
+  });
+  SetupCache cache;
+  std::vector<Json> summaries(rows.size());
+  std::vector<std::string> statuses(rows.size());
+  std::vector<double> walls(rows.size());
+  for (std::size_t i : order) {
+    const Case& c = rows[i].c;
+    const Stopwatch clock;
+    std::string status = "converged";
+    try {
+      RunOptions run_options;
+      run_options.cache = &cache;
+      if (options.progress)
+        run_options.progress = [&, i](const std::string& l) { options.progress("[row " + std::to_string(i + 1) + "] " + l); };
+      const RunResult r = run_case(c, run_options);
+      summaries[i] = r.summary;
+      if (r.exit_status == 3) status = "not converged", ++result.not_converged;
+      else ++result.converged;
+      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + r.report);
+    } catch (const SolverFailure& e) {
+      status = std::string("failed: ") + e.what();
+      ++result.failed;
+      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + status);
+    }
+    ++result.rows;
+    statuses[i] = status;
+    walls[i] = clock.elapsed();
+  }
+
   std::ostringstream md, csv_out;
   md << "| row | eps | omega | hF | hS | k | paper k | last increment | paper | ‖v‖_{0,Ω_S^u} | paper "
         "| ‖v‖/ε | paper | max \\|u\\| (m) | contact X1 (m) | fluid / structure triangles | wall (s) | "
@@ -116,25 +154,9 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Row& row = rows[i];
     const Case& c = row.c;
-    const Stopwatch clock;
-    std::string status = "converged";
-    Json s;
-    try {
-      RunOptions run_options;
-      if (options.progress)
-        run_options.progress = [&, i](const std::string& l) { options.progress("[row " + std::to_string(i + 1) + "] " + l); };
-      const RunResult r = run_case(c, run_options);
-      s = r.summary;
-      if (r.exit_status == 3) status = "not converged", ++result.not_converged;
-      else ++result.converged;
-      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + r.report);
-    } catch (const SolverFailure& e) {
-      status = std::string("failed: ") + e.what();
-      ++result.failed;
-      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + status);
-    }
-    ++result.rows;
-    const double wall = clock.elapsed();
+    const Json& s = summaries[i];
+    const std::string& status = statuses[i];
+    const double wall = walls[i];
     auto num = [&](const char* key) { return s.contains(key) ? s[key].get<double>() : NAN; };
     auto paper = [&](const char* key) {
       auto it = row.paper.find(key);

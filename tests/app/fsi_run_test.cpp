@@ -90,6 +90,28 @@ TEST(FsiRun, SweepMarksRowsAndWritesTables) {
   fs::remove_all(dir);
 }
 
+// Rows of a sweep share meshes and setups (SetupCache); each row's numbers must be
+// those of a run of its own, bit for bit.
+TEST(FsiRun, SweepRowsEqualSeparateRuns) {
+  const fs::path dir = testing::scratch_dir("sweep-cache");
+  testing::write_text(dir / "rows.csv", "coupling.eps,structure.h,fluid.h\n1e-4,0.03,0.02\n1e-5,0.03,0.02\n1e-5,0.015,0.02\n");
+  const std::string base = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/paper-7.2.toml'";  // (char* + string: GCC 12 false -Wrestrict)
+  ASSERT_EQ(testing::run_cli("sweep " + base + " rows.csv --set coupling.scheme=aitken --out tab -q", dir).status, 0);
+  const std::vector<std::string> rows = {"--set coupling.eps=1e-4 --set structure.h=0.03",
+                                         "--set coupling.eps=1e-5 --set structure.h=0.03",
+                                         "--set coupling.eps=1e-5 --set structure.h=0.015"};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string out = "single" + std::string(1, static_cast<char>('0' + i));
+    ASSERT_EQ(testing::run_cli("run " + base + " " + rows[i] + " --set fluid.h=0.02 --set coupling.scheme=aitken --out " + out + " -q", dir).status, 0);
+    const auto a = nlohmann::json::parse(testing::slurp(dir / out / "summary.json"));
+    const fs::path row_dir = dir / "tab" / ("row-0" + std::string(1, static_cast<char>('1' + i)));
+    const auto b = nlohmann::json::parse(testing::slurp(row_dir / "summary.json"));
+    for (const char* key : {"iterations", "final_increment_l2", "fluid_velocity_l2_in_structure", "max_displacement"})
+      EXPECT_EQ(a[key], b[key]) << "row " << i + 1 << ": " << key;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(FsiRun, SweepWithABadRowWritesNothing) {
   const fs::path dir = testing::scratch_dir("sweep-bad");
   testing::write_text(dir / "rows.csv", "coupling.eps,coupling.omega\n1e-4,0.1\n1e-5,7\n");
