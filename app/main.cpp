@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "common/interrupt.hpp"
 #include "io/case.hpp"
 #include "common/errors.hpp"
 #include "run/run_case.hpp"
@@ -33,8 +34,10 @@ int sweep_command(const std::string& case_path, const std::string& rows, const s
   const fsi::SweepResult r = fsi::run_sweep(case_path, rows, options);
   std::cout << r.table_markdown << '\n'
             << r.rows << " rows: " << r.converged << " converged, " << r.not_converged
-            << " reached the iteration limit, " << r.failed << " failed. Tables in " << r.out_dir
-            << "/ (table.md, table.csv; one directory per row)." << std::endl;
+            << " reached the iteration limit, " << r.failed << " failed"
+            << (r.interrupted ? "; interrupted (Ctrl-C), the tables hold the rows run so far" : "")
+            << ". Tables in " << r.out_dir << "/ (table.md, table.csv; one directory per row)." << std::endl;
+  if (r.interrupted) return fsi::kInterruptedExitStatus;
   return r.failed > 0 ? 1 : 0;
 }
 
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  fsi::install_interrupt_handler();
   if (app.get_subcommands().empty()) {
     std::cerr << app.help();
     return 2;

@@ -3,8 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "common/timer.hpp"
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
+#include "common/timer.hpp"
 
 namespace fsi {
 
@@ -18,6 +19,19 @@ CouplingResult FixedPointCoupling::run() {
   const Mesh& reference = p_.structure.mesh();
   const int nv = reference.num_vertices();
   CouplingResult result;
+  result.structure.u = Eigen::VectorXd::Zero(2 * nv);
+  try {
+    iterate(result);
+  } catch (const SolverFailure& e) {
+    result.failure = e.what();
+  }
+  result.projections = p_.relaxation.projections();
+  return result;
+}
+
+void FixedPointCoupling::iterate(CouplingResult& result) {
+  const Mesh& reference = p_.structure.mesh();
+  const int nv = reference.num_vertices();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * nv);  // u⁰ = 0: feasible at rest
   const ContactSolution* warm = nullptr;
   auto fail = [&](const std::string& phase, const std::string& what) {
@@ -52,30 +66,42 @@ CouplingResult FixedPointCoupling::run() {
     {
       const Stopwatch clock;  // step 3: b_S from v∘φ^k, p∘φ^k (eq. 33)
       const FluidField field(p_.fluid_locator, *fluid);
-      b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+      try {
+        b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+      } catch (const std::exception& e) {
+        fail("the force transfer", e.what());
+      }
       if (!b_S.allFinite()) fail("the force transfer", "non-finite load on the structure");
       rec.t_transfer = clock.elapsed();
     }
     {
       const Stopwatch clock;  // step 4: the contact QP, warm-started
+      ContactSolution next;
       try {
-        result.structure = p_.structure.solve(b_S, warm);
+        next = p_.structure.solve(b_S, warm);
       } catch (const std::exception& e) {
         fail("the contact QP", e.what());
       }
-      if (!result.structure.u.allFinite()) fail("the contact QP", "non-finite displacement");
+      if (!next.u.allFinite()) fail("the contact QP", "non-finite displacement");
+      result.structure = std::move(next);  // only a good state replaces the last one
       rec.t_structure = clock.elapsed();
     }
     const Eigen::VectorXd d = result.structure.u - u;  // step 5
-    rec.increment = std::sqrt(std::max(0.0, d.dot(M_ * d)));
+    rec.increment = std::sqrt(d.dot(M_ * d));
+    if (!std::isfinite(rec.increment)) fail("the stopping test", "the increment is not a finite number");
     rec.active_nodes = result.structure.qp.active_count();
     result.final_increment = rec.increment;
     const bool converged = rec.increment < tol_;
+    result.history.push_back(rec);  // recorded before relaxing: kept if that fails
     if (!converged && k < max_iterations_) {
-      u = p_.relaxation.next(u, result.structure.u);
-      rec.omega = p_.relaxation.omega();
+      try {
+        u = p_.relaxation.next(u, result.structure.u);
+      } catch (const std::exception& e) {
+        fail("the relaxation (" + p_.relaxation.name() + ")", e.what());
+      }
+      if (!u.allFinite()) fail("the relaxation (" + p_.relaxation.name() + ")", "non-finite iterate");
+      rec.omega = result.history.back().omega = p_.relaxation.omega();
     }
-    result.history.push_back(rec);
     if (progress) {
       char omega[16] = "-";
       if (std::isfinite(rec.omega)) std::snprintf(omega, sizeof omega, "%.3g", rec.omega);
@@ -89,12 +115,15 @@ CouplingResult FixedPointCoupling::run() {
     }
     if (converged) {
       result.converged = true;
-      break;
+      return;
+    }
+    if (interrupt_requested()) {
+      result.interrupted = true;
+      if (progress) progress("[coupling] interrupted (Ctrl-C): stopping after iteration " + std::to_string(k));
+      return;
     }
     warm = &result.structure;
   }
-  result.projections = p_.relaxation.projections();
-  return result;
 }
 
 }  // namespace fsi

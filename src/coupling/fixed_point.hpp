@@ -35,6 +35,10 @@ struct CouplingResult {
   ContactSolution structure;   // the last ũ (the solution if converged)
   std::vector<IterationRecord> history;
   int projections = 0;         // infeasible accelerated updates projected back
+  // Set when the loop stopped early: a solve failed (the message names the phase and
+  // iteration; `structure` is the last good state) or Ctrl-C was pressed.
+  std::string failure;
+  bool interrupted = false;
 };
 
 class FixedPointCoupling {
@@ -53,11 +57,13 @@ class FixedPointCoupling {
   // One line per iteration (for stderr).
   std::function<void(const std::string&)> progress;
 
-  // Throws SolverFailure naming the phase and iteration if a solve fails or a field
-  // becomes non-finite.
+  // Never throws for a failed solve: it stops, keeps the last good state and says
+  // why in CouplingResult::failure (a solve failed or a field became non-finite).
   CouplingResult run();
 
  private:
+  void iterate(CouplingResult& result);
+
   Parts p_;
   double tol_;
   int max_iterations_;

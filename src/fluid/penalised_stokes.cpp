@@ -116,7 +116,7 @@ void PenalisedStokes::set_eps(double eps) {
 }
 
 void PenalisedStokes::reset() {
-  solved_ = false;
+  solved_ = solved_once_ = false;
   chi_changed_ = true;
   chi_.setZero();
   timing_ = FluidTiming{};
@@ -168,6 +168,7 @@ const FluidSolution& PenalisedStokes::solve() {
   const Stopwatch clock;
   const Eigen::VectorXd x = solver_->solve(rhs_);
   if (!x.allFinite()) throw std::runtime_error("the Stokes solve produced a non-finite value");
+  solved_ = false;  // until the new solution is complete
   Eigen::VectorXd z = z_fixed_;
   for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];
   const int nv = mesh_.num_vertices();
@@ -176,8 +177,9 @@ const FluidSolution& PenalisedStokes::solve() {
   solution_.p = z.segment(2 * nv, nv);
   recover_bubbles(z);
   timing_.solve += clock.elapsed();
-  solved_ = true;
+  solved_ = solved_once_ = true;
   chi_changed_ = false;
+  solved_chi_ = chi_;
   return solution_;
 }
 

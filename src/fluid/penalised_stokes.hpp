@@ -54,6 +54,12 @@ class PenalisedStokes {
   // the previous solution without refactorising.
   const FluidSolution& solve();
 
+  // The last successful solution and the χ it was computed with (after a failed
+  // solve: the one before). Empty before the first success.
+  bool has_solution() const { return solved_once_; }
+  const FluidSolution& last_solution() const { return solution_; }
+  const Eigen::VectorXd& last_solution_chi() const { return solved_chi_; }
+
   const Mesh& mesh() const { return mesh_; }
   double mu() const { return mu_; }
   double eps() const { return eps_; }
@@ -79,7 +85,8 @@ class PenalisedStokes {
   Eigen::SparseMatrix<double> K_;
   Eigen::VectorXd rhs_;
   std::unique_ptr<SparseDirectSolver> solver_;
-  bool analysed_ = false, solved_ = false, chi_changed_ = true;
+  bool analysed_ = false, solved_ = false, chi_changed_ = true, solved_once_ = false;
+  Eigen::VectorXd solved_chi_;
   FluidSolution solution_;
   FluidTiming timing_;
 };

@@ -274,7 +274,10 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
   {
     Section s(section_table(root, "coupling", origin), "coupling", origin);
     auto& p = c.coupling;
-    p.eps = s.number("eps", p.eps, kPositive);
+    // Below 1e-12 the penalty outweighs the viscous term by over 1e10 per element
+    // (hF = 0.01, μ_F = 0.0035) and the fluid system loses its digits; ε = 1e-300
+    // overflows outright.
+    p.eps = s.number("eps", p.eps, {1e-12, inf, true, false});
     p.omega = s.number("omega", p.omega, left_open(0, 1));
     p.tol = s.number("tol", p.tol, kPositive);
     p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, kMaxIterations);

@@ -86,6 +86,7 @@ Point PointLocator::nearest_boundary_point(const Point& p) const {
 }
 
 Location PointLocator::locate_or_nearest(const Point& p) const {
+  if (!p.allFinite()) throw std::domain_error("cannot locate a point with a non-finite coordinate");
   if (auto loc = locate(p)) return *loc;
   const Point q = nearest_boundary_point(p);
   if (auto loc = locate(q, 1e-9)) {

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "qp/qp_problem.hpp"
@@ -6,7 +7,13 @@
 namespace fsi {
 
 double KktResiduals::max() const {
-  return std::max({stationarity, feasibility, complementarity, dual_feasibility});
+  // std::max drops NaN (every comparison with it is false): a NaN residual must fail.
+  double m = 0;
+  for (double r : {stationarity, feasibility, complementarity, dual_feasibility}) {
+    if (std::isnan(r)) return r;
+    m = std::max(m, r);
+  }
+  return m;
 }
 
 int QpResult::active_count() const {

@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
@@ -121,21 +122,24 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
     }
   }
 
-  // The final state: ũ (the solution if converged), the last fluid solution.
+  // The final state: ũ (the solution if converged; after a failure the last good
+  // one) and the last successful fluid solution.
   const Eigen::VectorXd& u = result.structure.u;
   const Eigen::VectorXd u1 = component(u, 0), u2 = component(u, 1);
   const Mesh deformed = displaced(ref, u1, u2);
-  const FluidSolution& fluid = f.stokes->solve();  // cached: χ unchanged since the last solve
+  const bool has_fluid = f.stokes->has_solution();
+  const FluidSolution& fluid = f.stokes->last_solution();
+  const Eigen::VectorXd& chi = f.stokes->last_solution_chi();
   const FluidField field(*f.locator, fluid);
-  const double v_norm = velocity_l2_over(field, deformed);
-  const double v_norm_chi = velocity_l2_on_chi(field, *f.mesh, f.stokes->chi());
+  const double v_norm = has_fluid ? velocity_l2_over(field, deformed) : NAN;
+  const double v_norm_chi = has_fluid ? velocity_l2_on_chi(field, *f.mesh, chi) : NAN;
   const std::vector<int> contact_vertices =
       fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
 
   {
     ScopedPhase phase(times, "output");
-    if (c.output.vtu) {
-      write_fluid_vtu(path_in(c, "fluid.vtu"), *f.mesh, fluid, f.stokes->chi());
+    if (c.output.vtu && has_fluid) {
+      write_fluid_vtu(path_in(c, "fluid.vtu"), *f.mesh, fluid, chi);
       if (!fluid_only) {
         write_structure_vtu(path_in(c, "structure.vtu"), s, result.structure, true);
         write_pvd(path_in(c, "fsi.pvd"), {{"fluid.vtu", 0}, {"structure.vtu", 1}});
@@ -147,7 +151,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
                   fluid_only ? "structure at rest"
                              : (std::to_string(result.iterations) + " iterations" +
                                 (result.converged ? "" : " (not converged)")).c_str());
-    if (c.output.png) {
+    if (c.output.png && has_fluid) {
       write_fluid_png(path_in(c, fluid_only ? "fluid.png" : "fsi.png"), c, *f.mesh, fluid, deformed,
                       contact_vertices, c.name + ": fluid velocity magnitude", note);
       if (!fluid_only) write_structure_png(path_in(c, "structure.png"), c, s, result.structure);
@@ -163,6 +167,11 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["parameters"] = to_json(c);
   j["mesh"] = {{"structure", to_json(s_stats)}, {"fluid", to_json(f_stats)}};
   j["converged"] = result.converged;
+  j["status"] = !result.failure.empty() ? "failed"
+                : result.interrupted    ? "interrupted"
+                : result.converged      ? "converged"
+                                        : "iteration limit";
+  if (!result.failure.empty()) j["failure"] = result.failure;
   j["iterations"] = result.iterations;
   if (!fluid_only) {
     j["paper_k"] = result.iterations - 1;  // the paper's counter k at the stop (§6)
@@ -207,7 +216,9 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
                   f_stats.triangles, s_stats.triangles, c.output.dir.c_str());
   }
   r.report = text;
-  r.exit_status = result.converged ? 0 : 3;
+  if (!result.failure.empty())
+    throw SolverFailure(result.failure + " (the last good state is written in " + c.output.dir + "/)");
+  r.exit_status = result.interrupted ? kInterruptedExitStatus : result.converged ? 0 : 3;
   return r;
 }
 

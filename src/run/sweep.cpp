@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 #include "common/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "run/output_dir.hpp"
@@ -119,8 +120,13 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
   SetupCache cache;
   std::vector<Json> summaries(rows.size());
   std::vector<std::string> statuses(rows.size());
-  std::vector<double> walls(rows.size());
+  std::vector<double> walls(rows.size(), NAN);
+  std::fill(statuses.begin(), statuses.end(), "not run (interrupted)");
   for (std::size_t i : order) {
+    if (interrupt_requested()) {
+      result.interrupted = true;
+      break;
+    }
     const Case& c = rows[i].c;
     const Stopwatch clock;
     std::string status = "converged";
@@ -131,7 +137,8 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
         run_options.progress = [&, i](const std::string& l) { options.progress("[row " + std::to_string(i + 1) + "] " + l); };
       const RunResult r = run_case(c, run_options);
       summaries[i] = r.summary;
-      if (r.exit_status == 3) status = "not converged", ++result.not_converged;
+      if (r.exit_status == kInterruptedExitStatus) status = "interrupted", result.interrupted = true;
+      else if (r.exit_status == 3) status = "not converged", ++result.not_converged;
       else ++result.converged;
       if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + r.report);
     } catch (const SolverFailure& e) {

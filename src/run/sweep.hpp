@@ -18,6 +18,7 @@ struct SweepOptions {
 
 struct SweepResult {
   int rows = 0, converged = 0, not_converged = 0, failed = 0;
+  bool interrupted = false;  // Ctrl-C: the table holds the rows run so far
   std::string out_dir;
   std::string table_markdown;
 };

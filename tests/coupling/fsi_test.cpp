@@ -2,6 +2,7 @@
 // (hF = 0.02, hS = 0.03: 2.4k fluid triangles; each run takes well under a second).
 #include <gtest/gtest.h>
 
+#include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "io/case.hpp"
 #include "run/fluid_setup.hpp"
@@ -17,7 +18,22 @@ struct Coupled {
   SparseMatrix M;         // L²(Ω_S0) mass
 };
 
-Coupled solve(std::vector<std::string> sets) {
+// A relaxation that poisons the iterate after `good` steps (to exercise failures).
+class PoisonedRelaxation final : public Relaxation {
+ public:
+  explicit PoisonedRelaxation(int good) : good_(good) {}
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+    if (++calls_ > good_) return Eigen::VectorXd::Constant(u.size(), NAN);
+    return u + 0.1 * (H_u - u);
+  }
+  double omega() const override { return 0.1; }
+  std::string name() const override { return "poisoned"; }
+
+ private:
+  int good_, calls_ = 0;
+};
+
+Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr) {
   sets.insert(sets.begin(), {"fluid.h=0.02", "structure.h=0.03"});
   const Case c = load_case("", sets);
   StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
@@ -27,17 +43,18 @@ Coupled solve(std::vector<std::string> sets) {
   Coupled out;
   out.M = assemble_vector_mass(s.mesh());
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, out.M);
-  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force, *relaxation},
+  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force,
+                           custom ? *custom : *relaxation},
                           c.coupling.tol, c.coupling.max_iterations);
   out.result = loop.run();
   const Eigen::VectorXd& u = out.result.structure.u;
   const int nv = s.mesh().num_vertices();
-  const FluidField field(*f.locator, f.stokes->solve());
+  const FluidField field(*f.locator, f.stokes->last_solution());
   out.v_norm = velocity_l2_over(field, displaced(s.mesh(), u.head(nv), u.tail(nv)));
   Mesh chi_region;
   chi_region.vertices = f.mesh->vertices;
   for (int t = 0; t < f.mesh->num_triangles(); ++t)
-    if (f.stokes->chi()[t] >= 1.0) chi_region.triangles.push_back(f.mesh->triangles[t]);
+    if (f.stokes->last_solution_chi()[t] >= 1.0) chi_region.triangles.push_back(f.mesh->triangles[t]);
   out.v_norm_chi = velocity_l2_over(field, chi_region);
   out.slack = s.solver->contact().C_S * u - s.solver->contact().c_lb;
   return out;
@@ -110,6 +127,29 @@ TEST(Fsi, IterationLimitIsReportedNotHidden) {
   EXPECT_EQ(c.result.iterations, 3);
   EXPECT_EQ(c.result.history.size(), 3u);
   EXPECT_GT(c.result.final_increment, 1e-4);
+}
+
+// A NaN appearing in the iterate (the relaxation after iteration 2 returns NaN here)
+// stops the loop with a message naming the phase and iteration, and keeps the last
+// good state: iteration 2's structure, and the history up to it.
+TEST(Fsi, NonFiniteFieldStopsWithTheLastGoodState) {
+  PoisonedRelaxation poisoned(1);
+  const Coupled c = solve({}, &poisoned);
+  EXPECT_FALSE(c.result.converged);
+  EXPECT_NE(c.result.failure.find("the relaxation"), std::string::npos) << c.result.failure;
+  EXPECT_NE(c.result.failure.find("iteration 2"), std::string::npos) << c.result.failure;
+  EXPECT_TRUE(c.result.structure.u.allFinite());
+  EXPECT_GT(c.result.structure.u.norm(), 0.0);
+  EXPECT_EQ(c.result.history.size(), 2u);
+}
+
+TEST(Fsi, InterruptStopsAfterTheCurrentIteration) {
+  request_interrupt();
+  const Coupled c = solve({});
+  clear_interrupt();
+  EXPECT_TRUE(c.result.interrupted);
+  EXPECT_EQ(c.result.iterations, 1);
+  EXPECT_TRUE(c.result.structure.u.allFinite());
 }
 
 }  // namespace
