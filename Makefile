@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: demo test build deps clean
+.PHONY: demo test build deps clean fuzz-build fuzz-smoke fuzz test-sanitize
 
 deps:
 	@scripts/install-deps.sh
@@ -21,9 +21,34 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@$(MAKE) --no-print-directory fuzz-smoke
+
+# libFuzzer targets (clang, ASan + UBSan): a short run of each is part of `make test`;
+# `make fuzz` runs each for FUZZ_RUNS inputs (docs/reliability.md).
+FUZZ_RUNS ?= 200000
+fuzz-build: deps
+	@cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ > /dev/null
+	@cmake --build build-fuzz -j $(JOBS)
+
+fuzz-smoke: fuzz-build
+	@cd build-fuzz && ctest --output-on-failure
+
+fuzz: fuzz-build
+	@mkdir -p build-fuzz/long-case build-fuzz/long-msh
+	ASAN_OPTIONS=detect_leaks=1 build-fuzz/fuzz_case -runs=$(FUZZ_RUNS) -max_len=4096 build-fuzz/long-case cases tests/data/fuzz-regressions
+	ASAN_OPTIONS=detect_leaks=0 build-fuzz/fuzz_msh -runs=$(FUZZ_RUNS) -max_len=20000 build-fuzz/long-msh cases/meshes
+
+# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFSICONTACT_SANITIZE=ON \
+	  -DFSICONTACT_BUILD_BENCH=OFF > /dev/null
+	@cmake --build build-sanitize -j $(JOBS)
+	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) build-fuzz build-sanitize out
 
 DEMO_CASE ?= cases/paper-7.2.toml
 DEMO_OUT ?= out/paper-7.2/ (summary.json, history.csv, fsi.png, structure.png, fsi.pvd opens fluid.vtu and structure.vtu in ParaView)

@@ -15,12 +15,11 @@ packages=(
   nlohmann-json3-dev     # summary.json
   libboost-dev           # Boost.Geometry R-tree (point location)
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev # libFuzzer and sanitizer runtimes (make test runs a fuzz smoke test)
+  time                   # /usr/bin/time -v: peak memory in the benchmarks
 )
 if [[ "${1:-}" == "--with-freefem" ]]; then
   packages+=(freefem++ libfreefem++ time)   # only for bench-compare
-fi
-if [[ "${1:-}" == "--with-fuzz" ]]; then
-  packages+=(clang libclang-rt-14-dev)       # libFuzzer and sanitizer runtimes
 fi
 
 missing=()

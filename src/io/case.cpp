@@ -15,6 +15,14 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+// A TOML number as a double. toml++'s value<double>() refuses integers that a double
+// cannot hold exactly (found by fuzzing: L = 30000000020000000 threw
+// bad_optional_access); the nearest double is what a user means.
+double as_double(const toml::node& n) {
+  if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
+  return n.as_floating_point()->get();
+}
+
 std::string fmt(double v) {
   std::ostringstream s;
   s << v;
@@ -64,7 +72,7 @@ class Section {
     const toml::node* n = find(key);
     if (!n) return value;
     if (!n->is_number()) fail(origin_, full(key), "must be a number", range.text());
-    const double v = n->value<double>().value();
+    const double v = as_double(*n);
     if (!std::isfinite(v)) fail(origin_, full(key), "must be finite", range.text());
     if (!range.contains(v)) fail(origin_, full(key), "= " + fmt(v) + " is out of range", range.text());
     return v;
@@ -104,7 +112,7 @@ class Section {
     const toml::array* a = n->as_array();
     if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
       fail(origin_, full(key), "must be an array of two numbers", "[x, y], finite");
-    const Point v((*a)[0].value<double>().value(), (*a)[1].value<double>().value());
+    const Point v(as_double((*a)[0]), as_double((*a)[1]));
     if (!v.allFinite()) fail(origin_, full(key), "must be finite", "[x, y], finite");
     return v;
   }
@@ -140,26 +148,34 @@ const toml::table* section_table(const toml::table& root, const std::string& nam
   return n->as_table();
 }
 
-// "section.key=value": value parsed as TOML, or taken as a bare string.
+// "section.key=value" (or "key=value" for a top-level key such as name): the value
+// parsed as TOML, or taken as a bare string.
 void apply_override(toml::table& root, const std::string& text, Origin& origin) {
   const auto eq = text.find('=');
-  const auto dot = text.find('.');
-  if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
+  if (eq == std::string::npos || eq == 0)
     throw InputError("--set " + text + ": expected section.key=value (for example coupling.omega=0.2)");
-  const std::string section = text.substr(0, dot), key = text.substr(dot + 1, eq - dot - 1);
-  const std::string value = text.substr(eq + 1);
-  toml::node_view<toml::node> parsed;
+  const std::string path = text.substr(0, eq), value = text.substr(eq + 1);
+  const auto dot = path.find('.');
+  const std::string section = dot == std::string::npos ? "" : path.substr(0, dot);
+  const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
+  if ((dot != std::string::npos && (section.empty() || key.empty())) || key.find('.') != std::string::npos)
+    throw InputError("--set " + text + ": expected section.key=value (for example coupling.omega=0.2)");
   toml::table holder;
   try {
     holder = toml::parse("v = " + value);
   } catch (const toml::parse_error&) {
     holder.insert_or_assign("v", value);  // a bare word such as aitken
   }
-  if (!root.contains(section)) root.insert(section, toml::table{});
-  toml::table* t = root[section].as_table();
-  if (!t) throw InputError("--set " + text + ": " + section + " is not a section");
+  toml::table* t = &root;
+  if (!section.empty()) {
+    if (!root.contains(section)) root.insert(section, toml::table{});
+    t = root[section].as_table();
+    if (!t) throw InputError("--set " + text + ": " + section + " is not a section");
+  } else if (key != "name") {
+    throw InputError("--set " + text + ": expected section.key=value (for example coupling.omega=0.2)");
+  }
   t->insert_or_assign(key, *holder.get("v"));
-  origin.overridden.insert(section + "." + key);
+  origin.overridden.insert(path);
 }
 
 std::string resolve_path(const std::string& file, const std::string& case_path) {
@@ -319,6 +335,20 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   }
   for (const auto& o : overrides) apply_override(root, o, origin);
   return read_case(root, origin, path, /*has_fluid_default=*/path.empty());
+}
+
+Case load_case_text(const std::string& text, const std::string& origin_name,
+                    const std::vector<std::string>& overrides) {
+  Origin origin{origin_name, {}};
+  toml::table root;
+  try {
+    root = toml::parse(text, origin_name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(origin_name + ":" + std::to_string(e.source().begin.line) + ": " +
+                     std::string(e.description()));
+  }
+  for (const auto& o : overrides) apply_override(root, o, origin);
+  return read_case(root, origin, "", /*has_fluid_default=*/false);
 }
 
 std::string to_toml(const Case& c) {

@@ -70,6 +70,11 @@ struct Case {
 // Throws InputError "<file>: <key> ...; allowed: ..." on the first problem.
 Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same from TOML text; `origin` names it in messages, relative mesh paths
+// resolve against the current directory.
+Case load_case_text(const std::string& text, const std::string& origin,
+                    const std::vector<std::string>& overrides = {});
+
 // The resolved case as TOML text (written beside the results, rerunnable).
 std::string to_toml(const Case& c);
 

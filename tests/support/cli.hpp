@@ -32,12 +32,10 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
-// `args` is appended to the binary's path as shell words; runs with `cwd` as the
-// working directory.
-inline CliRun run_cli(const std::string& args, const std::filesystem::path& cwd) {
+// Runs a whole shell command line in `cwd` (for commands that set an environment).
+inline CliRun run_shell(const std::string& command, const std::filesystem::path& cwd) {
   const auto out = cwd / ".stdout", err = cwd / ".stderr";
-  const std::string cmd = "cd '" + cwd.string() + "' && '" + std::string(FSICONTACT_BINARY) + "' " +
-                          args + " > '" + out.string() + "' 2> '" + err.string() + "'";
+  const std::string cmd = "cd '" + cwd.string() + "' && " + command + " > '" + out.string() + "' 2> '" + err.string() + "'";
   const int raw = std::system(cmd.c_str());
   CliRun r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -46,6 +44,16 @@ inline CliRun run_cli(const std::string& args, const std::filesystem::path& cwd)
   std::filesystem::remove(out);
   std::filesystem::remove(err);
   return r;
+}
+
+// `args` is appended to the binary's path as shell words; runs with `cwd` as the
+// working directory.
+inline CliRun run_cli(const std::string& args, const std::filesystem::path& cwd) {
+  std::string command = "'";  // built step by step: "'" + std::string trips GCC 12's -Wrestrict
+  command += FSICONTACT_BINARY;
+  command += "' ";
+  command += args;
+  return run_shell(command, cwd);
 }
 
 inline void write_text(const std::filesystem::path& p, const std::string& text) {

@@ -1,0 +1,110 @@
+// The case loader: defaults, overrides, the resolved TOML, and every input the
+// fuzzer ever crashed on (tests/data/fuzz-regressions/).
+#include "io/case.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace fsi {
+namespace {
+
+TEST(Case, DefaultsAreThePapersSection72) {
+  const Case c = load_case("");
+  ASSERT_TRUE(c.fluid.has_value());
+  EXPECT_EQ(c.name, "paper-7.2");
+  EXPECT_EQ(c.structure.L, 0.3);
+  EXPECT_EQ(c.structure.H, 0.03);
+  EXPECT_EQ(c.structure.E, 3.0e5);
+  EXPECT_EQ(c.structure.nu, 0.45);
+  EXPECT_DOUBLE_EQ(c.structure.f.y(), -9.81 * 1100);
+  EXPECT_EQ(c.structure.h, 0.015);
+  EXPECT_EQ(c.obstacle.x0, 0.2);
+  EXPECT_EQ(c.obstacle.y0, -0.07);
+  EXPECT_EQ(c.obstacle.r, 0.05);
+  EXPECT_EQ(c.obstacle.gamma, 0.8);
+  EXPECT_EQ(c.fluid->L1, 0.41);
+  EXPECT_EQ(c.fluid->mu, 0.0035);
+  EXPECT_DOUBLE_EQ(c.fluid->f.y(), -9.81 * 100);
+  EXPECT_EQ(c.fluid->Vmax, 8.0);
+  EXPECT_EQ(c.fluid->h, 0.01);
+  EXPECT_EQ(c.coupling.eps, 1e-5);
+  EXPECT_EQ(c.coupling.omega, 0.1);
+  EXPECT_EQ(c.coupling.tol, 1e-4);
+  EXPECT_EQ(c.coupling.max_iterations, 100);
+  EXPECT_EQ(c.coupling.scheme, "constant");
+  EXPECT_EQ(c.contact.solver, "active-set");
+  EXPECT_EQ(c.output.dir, "out/paper-7.2");
+}
+
+TEST(Case, TheShippedSection72FileEqualsTheBuiltInDefault) {
+  const Case file = load_case(std::string(FSICONTACT_SOURCE_DIR) + "/cases/paper-7.2.toml");
+  Case builtin = load_case("");
+  builtin.source = file.source;
+  EXPECT_EQ(to_toml(file), to_toml(builtin));
+}
+
+TEST(Case, WithoutAFluidSectionIsContactOnly) {
+  const Case c = load_case_text("name = \"x\"\n[structure]\nL = 0.06\nH = 0.005\n[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\n", "x.toml");
+  EXPECT_FALSE(c.fluid.has_value());
+  EXPECT_EQ(c.structure.L, 0.06);
+}
+
+TEST(Case, OverridesTakeTomlValuesOrBareWords) {
+  const Case c = load_case("", {"coupling.scheme=aitken", "coupling.eps=1e-4", "structure.f=[0, -5]",
+                                "coupling.max_iterations=7", "output.png=false", "name=\"other\""});
+  EXPECT_EQ(c.coupling.scheme, "aitken");
+  EXPECT_EQ(c.coupling.eps, 1e-4);
+  EXPECT_EQ(c.structure.f.y(), -5.0);
+  EXPECT_EQ(c.coupling.max_iterations, 7);
+  EXPECT_FALSE(c.output.png);
+}
+
+TEST(Case, IntegersAreAcceptedForRealKeys) {
+  const Case c = load_case("", {"structure.E=300000", "fluid.Vmax=8"});
+  EXPECT_EQ(c.structure.E, 3e5);
+}
+
+TEST(Case, ResolvedTomlReloadsToTheSameCase) {
+  for (const char* name : {"paper-7.2", "paper-7.1-fig7-fine", "paper-7.1-fig5-msh"}) {
+    const Case c = load_case(std::string(FSICONTACT_SOURCE_DIR) + "/cases/" + name + ".toml");
+    const std::string text = to_toml(c);
+    EXPECT_EQ(to_toml(load_case_text(text, "resolved.toml")), text) << name;
+  }
+}
+
+TEST(Case, ErrorsNameTheKeyAndTheAllowedRange) {
+  try {
+    load_case("", {"structure.nu=0.7"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("--set structure.nu"), std::string::npos) << m;
+    EXPECT_NE(m.find("0.7"), std::string::npos) << m;
+    EXPECT_NE(m.find("allowed: (0, 0.5)"), std::string::npos) << m;
+  }
+}
+
+// Every input the fuzzer (fuzz/fuzz_case.cpp) crashed on: now a Case or an InputError.
+TEST(Case, FuzzRegressionsGiveACaseOrAnInputError) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(FSICONTACT_SOURCE_DIR) + "/tests/data/fuzz-regressions")) {
+    if (entry.path().extension() != ".toml") continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+      load_case_text(text.str(), entry.path().filename().string());
+    } catch (const InputError&) {
+    }
+    ++files;
+  }
+  EXPECT_GE(files, 1);
+}
+
+}  // namespace
+}  // namespace fsi
