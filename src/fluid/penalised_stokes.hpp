@@ -70,6 +70,7 @@ class PenalisedStokes {
 
  private:
   void assemble();
+  void add_element(int t, double chi, double sign);
   void recover_bubbles(const Eigen::VectorXd& z);
 
   const Mesh& mesh_;
@@ -86,6 +87,10 @@ class PenalisedStokes {
   Eigen::VectorXd rhs_;
   std::unique_ptr<SparseDirectSolver> solver_;
   bool analysed_ = false, solved_ = false, chi_changed_ = true, solved_once_ = false;
+  bool assembled_ = false;
+  Eigen::VectorXd assembled_chi_;  // χ of the values now in K_ and rhs_
+  double assembled_eps_ = 0;
+  int updates_since_full_ = 0;
   Eigen::VectorXd solved_chi_;
   FluidSolution solution_;
   FluidTiming timing_;
