@@ -155,7 +155,7 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
   md << "| row | eps | omega | hF | hS | k | paper k | last increment | paper | ‖v‖_{0,Ω_S^u} | paper "
         "| ‖v‖/ε | paper | max \\|u\\| (m) | contact X1 (m) | fluid / structure triangles | wall (s) | "
         "status |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv_out << "row,eps,omega,hF,hS,scheme,k,paper_k,iterations,final_increment_l2,paper_increment,"
+  csv_out << "row,eps,omega,hF,hS,scheme,chi,k,paper_k,iterations,final_increment_l2,paper_increment,"
              "v_l2_in_structure,paper_v_norm,v_over_eps,paper_v_over_eps,max_displacement,contact_x_min,"
              "contact_x_max,fluid_triangles,structure_triangles,wall_s,fluid_s,status\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -185,7 +185,7 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
        << fmt(num("max_displacement"), 4) << " | " << fmt(x_min, 4) << "–" << fmt(x_max, 4) << " | " << ft
        << " / " << st << " | " << fmt(wall, 3) << " | " << status << " |\n";
     csv_out << std::setprecision(10) << i + 1 << ',' << c.coupling.eps << ',' << c.coupling.omega << ',' << hF
-            << ',' << c.structure.h << ',' << c.coupling.scheme << ',' << k << ',' << paper("k") << ','
+            << ',' << c.structure.h << ',' << c.coupling.scheme << ',' << (c.fluid ? c.fluid->chi : std::string()) << ',' << k << ',' << paper("k") << ','
             << (has ? s["iterations"].get<int>() : 0) << ',' << num("final_increment_l2") << ','
             << paper("increment") << ',' << num("fluid_velocity_l2_in_structure") << ',' << paper("v_norm")
             << ',' << num("fluid_velocity_l2_in_structure_over_eps") << ',' << paper("v_over_eps") << ','
