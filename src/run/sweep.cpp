@@ -140,6 +140,7 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
       if (r.exit_status == kInterruptedExitStatus) status = "interrupted", result.interrupted = true;
       else if (r.exit_status == 3) status = "not converged", ++result.not_converged;
       else ++result.converged;
+      if (r.summary.contains("convergence_warning")) status += ", unsettled (see its history.csv)";
       if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + r.report);
     } catch (const SolverFailure& e) {
       status = std::string("failed: ") + e.what();
