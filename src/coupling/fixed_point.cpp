@@ -16,10 +16,8 @@ FixedPointCoupling::FixedPointCoupling(Parts parts, double tol, int max_iteratio
 }
 
 CouplingResult FixedPointCoupling::run() {
-  const Mesh& reference = p_.structure.mesh();
-  const int nv = reference.num_vertices();
   CouplingResult result;
-  result.structure.u = Eigen::VectorXd::Zero(2 * nv);
+  result.structure = p_.structure.at_rest();  // the last good state if the first pass fails
   try {
     iterate(result);
   } catch (const SolverFailure& e) {

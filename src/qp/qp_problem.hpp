@@ -15,7 +15,7 @@ namespace fsi {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 struct KktResiduals {
-  double stationarity = 0;     // ‖Ax − b − Cᵀα‖∞, relative to the largest term
+  double stationarity = 0;     // ‖Ax − b − Cᵀα‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞ + ‖Cᵀα‖∞): backward error
   double feasibility = 0;      // max(0, c − Cx)∞, relative to max(‖c‖∞, ‖C‖∞‖x‖∞)
   double complementarity = 0;  // max |α_i (Cx − c)_i|, relative to ‖α‖∞ times that
   double dual_feasibility = 0; // max(0, −α)∞, relative to ‖α‖∞

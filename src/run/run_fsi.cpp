@@ -122,7 +122,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
       throw SolverFailure(std::string("the fluid solve failed: ") + e.what());
     }
     times.add("fluid", clock.elapsed());
-    result.structure.u = Eigen::VectorXd::Zero(2 * ref.num_vertices());
+    result.structure = s.solver->at_rest();
     result.converged = true;
   } else {
     const FluidParams& fp = *c.fluid;

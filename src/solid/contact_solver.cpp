@@ -84,6 +84,17 @@ ContactSolution ElasticContactSolver::solve(const Eigen::VectorXd& b_S,
 
 namespace fsi {
 
+ContactSolution ElasticContactSolver::at_rest() const {
+  ContactSolution out;
+  const Eigen::Index m = contact_.C_S.rows();
+  out.u = Eigen::VectorXd::Zero(A_S_.rows());
+  out.qp.x = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
+  out.qp.alpha = Eigen::VectorXd::Zero(m);
+  out.qp.active.assign(static_cast<std::size_t>(m), false);
+  out.qp.status = "not solved (at rest)";
+  return out;
+}
+
 Eigen::VectorXd ElasticContactSolver::project(const Eigen::VectorXd& z) {
   const Eigen::VectorXd slack = contact_.C_S * z - contact_.c_lb;
   if (slack.size() == 0 || slack.minCoeff() >= 0) return z;

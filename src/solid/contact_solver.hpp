@@ -27,6 +27,10 @@ class ElasticContactSolver {
 
   ContactSolution solve(const Eigen::VectorXd& b_S, const ContactSolution* warm = nullptr);
 
+  // The undeformed state u = 0 with no contact (α = 0, no active row): the state
+  // before any QP has been solved, complete so that outputs can be written from it.
+  ContactSolution at_rest() const;
+
   // The feasible displacement nearest to z in the A_S-norm: z itself if C_S z ≥ c_lb,
   // otherwise the QP with load A_S z (min ½(ξ−z)ᵀA_S(ξ−z) s.t. C_S ξ ≥ c_lb).
   Eigen::VectorXd project(const Eigen::VectorXd& z);

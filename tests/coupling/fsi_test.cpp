@@ -33,10 +33,12 @@ class PoisonedRelaxation final : public Relaxation {
   int good_, calls_ = 0;
 };
 
-Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr) {
+// `kkt_tolerance` < 0 makes every contact QP fail (to exercise a first-pass failure).
+Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr, double kkt_tolerance = 1e-9) {
   sets.insert(sets.begin(), {"fluid.h=0.02", "structure.h=0.03"});
   const Case c = load_case("", sets);
   StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
+  s.solver->qp_solver().kkt_tolerance = kkt_tolerance;
   FluidSetup f = make_fluid(c, make_fluid_mesh(c), c.coupling.eps);
   const Point f_F = c.fluid->f;
   const FluidForce force(s.mesh(), c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; });
@@ -141,6 +143,23 @@ TEST(Fsi, NonFiniteFieldStopsWithTheLastGoodState) {
   EXPECT_TRUE(c.result.structure.u.allFinite());
   EXPECT_GT(c.result.structure.u.norm(), 0.0);
   EXPECT_EQ(c.result.history.size(), 2u);
+}
+
+// A failure in the very first pass leaves the state u⁰ = 0, complete (one zero
+// multiplier and an inactive flag per contact row) so that the outputs can be written:
+// it used to be an empty QpResult, and writing structure.vtu read past its end.
+TEST(Fsi, FirstPassFailureKeepsTheCompleteStateAtRest) {
+  const Coupled c = solve({}, nullptr, -1.0);
+  EXPECT_FALSE(c.result.converged);
+  EXPECT_NE(c.result.failure.find("the contact QP failed at fixed-point iteration 1"), std::string::npos)
+      << c.result.failure;
+  const Eigen::Index m = c.slack.size();
+  ASSERT_GT(m, 0);
+  EXPECT_EQ(c.result.structure.u.norm(), 0.0);
+  ASSERT_EQ(c.result.structure.qp.alpha.size(), m);
+  EXPECT_EQ(c.result.structure.qp.alpha.norm(), 0.0);
+  EXPECT_EQ(c.result.structure.qp.active.size(), static_cast<std::size_t>(m));
+  EXPECT_EQ(c.result.structure.qp.active_count(), 0);
 }
 
 TEST(Fsi, InterruptStopsAfterTheCurrentIteration) {
