@@ -1,5 +1,6 @@
 #include "coupling/fixed_point.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -13,6 +14,24 @@ FixedPointCoupling::FixedPointCoupling(Parts parts, double tol, int max_iteratio
     : p_(parts), tol_(tol), max_iterations_(max_iterations),
       M_(assemble_vector_mass(parts.structure.mesh())) {
   p_.relaxation.project = [this](const Eigen::VectorXd& z) { return p_.structure.project(z); };
+}
+
+std::string convergence_warning(const CouplingResult& r, double tol) {
+  const std::size_t n = r.history.size();
+  if (!r.converged || n < 11) return "";
+  std::vector<double> previous;
+  for (std::size_t i = n - 11; i + 1 < n; ++i) previous.push_back(r.history[i].increment);
+  std::nth_element(previous.begin(), previous.begin() + 5, previous.end());
+  const double median = previous[5];
+  const double last = r.history[n - 1].increment, before = r.history[n - 2].increment;
+  if (median <= 5 * tol || last >= 0.1 * before) return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the increments had not settled (median of the ten before the last %.2e, tol %g) and the "
+                "last fell abruptly from %.2e to %.2e: the stop may be a chance dip below tol; see "
+                "history.csv",
+                median, tol, before, last);
+  return text;
 }
 
 CouplingResult FixedPointCoupling::run() {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fem/p1.hpp"
+#include "mesh/clipping.hpp"
 
 namespace fsi {
 
@@ -83,41 +84,6 @@ Eigen::VectorXd ChiComputer::area_fraction_rule(const Mesh& s) const {
   Eigen::VectorXd chi(fluid_.num_triangles());
   for (int f = 0; f < fluid_.num_triangles(); ++f) chi[f] = std::clamp(covered[f] / fluid_.area(f), 0.0, 1.0);
   return chi;
-}
-
-double triangle_intersection_area(const std::array<Point, 3>& a, const std::array<Point, 3>& b) {
-  // Sutherland–Hodgman: clip polygon a by each edge of b (both made counter-clockwise).
-  auto ccw = [](std::array<Point, 3> t) {
-    const Point e1 = t[1] - t[0], e2 = t[2] - t[0];
-    if (e1.x() * e2.y() - e1.y() * e2.x() < 0) std::swap(t[1], t[2]);
-    return t;
-  };
-  const std::array<Point, 3> clip = ccw(b);
-  std::vector<Point> poly(a.begin(), a.end()), next;
-  for (int k = 0; k < 3 && !poly.empty(); ++k) {
-    const Point p = clip[k], q = clip[(k + 1) % 3];
-    auto side = [&](const Point& x) { return (q.x() - p.x()) * (x.y() - p.y()) - (q.y() - p.y()) * (x.x() - p.x()); };
-    next.clear();
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const Point& cur = poly[i];
-      const Point& prev = poly[(i + poly.size() - 1) % poly.size()];
-      const double sc = side(cur), sp = side(prev);
-      if (sc >= 0) {
-        if (sp < 0) next.push_back(prev + (cur - prev) * (sp / (sp - sc)));
-        next.push_back(cur);
-      } else if (sp >= 0) {
-        next.push_back(prev + (cur - prev) * (sp / (sp - sc)));
-      }
-    }
-    poly.swap(next);
-  }
-  double area = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Point& u = poly[i];
-    const Point& v = poly[(i + 1) % poly.size()];
-    area += u.x() * v.y() - u.y() * v.x();
-  }
-  return std::abs(0.5 * area);
 }
 
 }  // namespace fsi

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "mesh/clipping.hpp"  // triangle_intersection_area
 #include "mesh/mesh.hpp"
 #include "mesh/point_locator.hpp"
 
@@ -32,8 +33,5 @@ class ChiComputer {
   std::string rule_;
   std::unique_ptr<BarycentreIndex> barycentres_;
 };
-
-// Area of the intersection of two triangles (convex clipping), for area fractions.
-double triangle_intersection_area(const std::array<Point, 3>& a, const std::array<Point, 3>& b);
 
 }  // namespace fsi

@@ -31,8 +31,9 @@ class FluidField {
   const FluidSolution& solution_;
 };
 
-// ‖v_h‖_{L²(Ω)} over the region covered by `mesh` (a deformed structure mesh), by
-// a quadrature of degree `degree` on its triangles, v_h evaluated at the points.
-double velocity_l2_over(const FluidField& field, const Mesh& mesh, int degree = 5);
+// ‖v_h‖_{L²(Ω)} over the region covered by `region` (a deformed structure mesh),
+// exactly: its triangles are cut along the fluid mesh and each piece integrated by a
+// rule exact for |v_h|² (degree 6).
+double velocity_l2_over(const FluidField& field, const Mesh& region);
 
 }  // namespace fsi

@@ -60,25 +60,6 @@ double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const
 
 }  // namespace
 
-// A stop can be a chance dip below tol of increments that never settled (seen with
-// ε = 1e-6, constant ω: increments wander 2e-4 to 4e-3 for 90 passes, then one falls
-// to 8e-5). Returns a warning if the median of the ten increments before the last one
-// exceeds 5·tol; the SPEC's stopping test itself is left as it is.
-std::string convergence_warning(const CouplingResult& r, double tol) {
-  if (!r.converged || r.history.size() < 11) return "";
-  std::vector<double> previous;
-  for (std::size_t i = r.history.size() - 11; i + 1 < r.history.size(); ++i) previous.push_back(r.history[i].increment);
-  std::nth_element(previous.begin(), previous.begin() + 5, previous.end());
-  const double median = previous[5];
-  if (median <= 5 * tol) return "";
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "the increments had not settled (median of the ten before the last %.2e, tol %g): "
-                "the stop may be a chance dip below tol; see history.csv",
-                median, tol);
-  return text;
-}
-
 RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   PhaseTimes times;
   const Stopwatch total;
