@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev          # dense/sparse linear algebra
   libsuitesparse-dev     # UMFPACK, CHOLMOD (through Eigen's wrappers)
+  libmumps-seq-dev       # MUMPS, sequential: the fluid's direct solver
   libgmsh-dev            # Gmsh SDK: mesh generation and .msh reading
   coinor-libipopt-dev    # IPOPT, the paper's QP solver
   libtomlplusplus-dev    # case files

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "fem/quadrature.hpp"
+#include "common/errors.hpp"
 #include "common/timer.hpp"
 
 namespace fsi {
@@ -157,32 +158,32 @@ void PenalisedStokes::add_element(int t, double chi, double sign) {
   }
 }
 
+void PenalisedStokes::assemble_full() {
+  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  rhs_ = traction_load_;
+  for (int t = 0; t < mesh_.num_triangles(); ++t) add_element(t, chi_[t], 1.0);
+  updates_since_full_ = 0;
+  assembled_chi_ = chi_;
+  assembled_eps_ = eps_;
+  assembled_ = true;
+}
+
 // Between fixed-point iterations χ changes on a few triangles near the structure's
 // outline: only those are re-assembled (old contribution out, new in). A full
 // assembly is done after a reset or a new ε, when over a tenth of the triangles
 // changed, and every 20 updates, which bounds the round-off of the differences.
 void PenalisedStokes::assemble() {
+  if (!assembled_ || assembled_eps_ != eps_ || updates_since_full_ >= 20) return assemble_full();
   std::vector<int> changed;
-  if (assembled_ && assembled_eps_ == eps_ && updates_since_full_ < 20) {
-    for (int t = 0; t < mesh_.num_triangles(); ++t)
-      if (chi_[t] != assembled_chi_[t]) changed.push_back(t);
+  for (int t = 0; t < mesh_.num_triangles(); ++t)
+    if (chi_[t] != assembled_chi_[t]) changed.push_back(t);
+  if (static_cast<int>(changed.size()) > mesh_.num_triangles() / 10) return assemble_full();
+  for (int t : changed) {
+    add_element(t, assembled_chi_[t], -1.0);
+    add_element(t, chi_[t], 1.0);
   }
-  if (!assembled_ || assembled_eps_ != eps_ || updates_since_full_ >= 20 ||
-      static_cast<int>(changed.size()) > mesh_.num_triangles() / 10) {
-    std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
-    rhs_ = traction_load_;
-    for (int t = 0; t < mesh_.num_triangles(); ++t) add_element(t, chi_[t], 1.0);
-    updates_since_full_ = 0;
-  } else {
-    for (int t : changed) {
-      add_element(t, assembled_chi_[t], -1.0);
-      add_element(t, chi_[t], 1.0);
-    }
-    ++updates_since_full_;
-  }
+  ++updates_since_full_;
   assembled_chi_ = chi_;
-  assembled_eps_ = eps_;
-  assembled_ = true;
 }
 
 const FluidSolution& PenalisedStokes::solve() {
@@ -200,6 +201,8 @@ const FluidSolution& PenalisedStokes::solve() {
     if (!analysed_) {
       solver_->analyze(K_);
       analysed_ = true;
+      timing_.analysis = clock.elapsed();
+      ++timing_.analyses;
     }
     solver_->factorize(K_);
     timing_.factorization += clock.elapsed();
@@ -207,7 +210,14 @@ const FluidSolution& PenalisedStokes::solve() {
   }
   const Stopwatch clock;
   const Eigen::VectorXd x = solver_->solve(rhs_);
-  if (!x.allFinite()) throw std::runtime_error("the Stokes solve produced a non-finite value");
+  if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
+  // A nearly singular matrix can factorise without a zero pivot and give garbage:
+  // one product with K (~1% of a factorisation) catches it. The solvers reach
+  // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
+  const double residual = (K_ * x - rhs_).norm(), scale = rhs_.norm();
+  if (!(residual <= 1e-8 * scale))
+    throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
+                        ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
   solved_ = false;  // until the new solution is complete
   Eigen::VectorXd z = z_fixed_;
   for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];

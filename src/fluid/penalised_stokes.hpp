@@ -35,13 +35,14 @@ struct FluidSolution {
 
 struct FluidTiming {
   double assembly = 0, factorization = 0, solve = 0;
-  int factorizations = 0, reused = 0;  // reused: χ unchanged, previous solution returned
+  double analysis = 0;  // the one symbolic analysis, part of `factorization`
+  int analyses = 0, factorizations = 0, reused = 0;  // reused: χ unchanged, previous solution returned
 };
 
 class PenalisedStokes {
  public:
   PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
-                  const FluidBoundaryConditions& bc, const std::string& solver = "umfpack");
+                  const FluidBoundaryConditions& bc, const std::string& solver = kDefaultSparseSolver);
 
   // χ per triangle (0 outside the structure, 1 inside; fractions allowed).
   void set_chi(const Eigen::VectorXd& chi);
@@ -67,6 +68,13 @@ class PenalisedStokes {
   long nonzeros() const { return K_.nonZeros(); }
   const FluidTiming& timing() const { return timing_; }
   std::string solver_name() const { return solver_->name(); }
+  // Assembles K and rhs for the current χ over all triangles, as solve() does after
+  // a reset or a new ε, without factorising (for benchmarks and tests).
+  void assemble_full();
+  // The condensed system K x = rhs on the free dofs as last assembled (by solve()
+  // or assemble_full()).
+  const Eigen::SparseMatrix<double>& matrix() const { return K_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
 
  private:
   void assemble();

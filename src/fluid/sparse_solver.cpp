@@ -1,31 +1,328 @@
 #include "fluid/sparse_solver.hpp"
 
-#include <Eigen/UmfPackSupport>
+#include <dmumps_c.h>
+#include <umfpack.h>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
 #include <stdexcept>
 
+#include "common/errors.hpp"
+
 namespace fsi {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+void SparseDirectSolver::analyze(const SparseMatrix& A) {
+  if (!A.isCompressed() || A.rows() != A.cols())
+    throw std::logic_error(name() + ": the matrix must be square and compressed");
+  outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1);
+  inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  factorized_ = false;
+  analyze_pattern(A);
+  ++analyses_;
+}
+
+void SparseDirectSolver::factorize(const SparseMatrix& A) {
+  if (analyses_ == 0) throw std::logic_error(name() + ": factorize() before analyze()");
+  // The symbolic analysis is only valid for the pattern it was done on.
+  const bool same_pattern = A.isCompressed() &&
+                            A.cols() + 1 == static_cast<Eigen::Index>(outer_.size()) &&
+                            A.nonZeros() == static_cast<Eigen::Index>(inner_.size()) &&
+                            std::equal(outer_.begin(), outer_.end(), A.outerIndexPtr()) &&
+                            std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
+  if (!same_pattern) throw std::logic_error(name() + ": the pattern differs from the analysed one");
+  factorized_ = false;
+  factorize_values(A);
+  factorized_ = true;
+  ++factorizations_;
+}
+
+Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
+  if (!factorized_) throw std::logic_error(name() + ": solve() without a factorisation");
+  if (rhs.size() + 1 != static_cast<Eigen::Index>(outer_.size()))
+    throw std::invalid_argument(name() + ": right-hand side of the wrong size");
+  return solve_factorized(rhs);
+}
+
 namespace {
 
-class UmfpackSolver final : public SparseDirectSolver {
+[[noreturn]] void singular(const std::string& solver, const std::string& detail) {
+  throw SolverFailure(solver + " could not factorise the Stokes matrix: it is singular (" + detail +
+                      "); check the Dirichlet boundary and the penalty ε");
+}
+
+// Eigen's own solvers and its CHOLMOD wrapper share one shape.
+template <class Factorization>
+class EigenSolver final : public SparseDirectSolver {
  public:
-  void analyze(const Eigen::SparseMatrix<double>& A) override { lu_.analyzePattern(A); }
-  void factorize(const Eigen::SparseMatrix<double>& A) override {
-    lu_.factorize(A);
-    if (lu_.info() != Eigen::Success)
-      throw std::runtime_error("UMFPACK could not factorise the Stokes matrix (singular?)");
+  explicit EigenSolver(std::string name) : name_(std::move(name)) {}
+  Factorization& factorization() { return factorization_; }
+  std::string name() const override { return name_; }
+  FactorStatistics statistics() const override;
+
+ protected:
+  void analyze_pattern(const SparseMatrix& A) override { factorization_.analyzePattern(A); }
+  void factorize_values(const SparseMatrix& A) override {
+    factorization_.factorize(A);
+    if (factorization_.info() != Eigen::Success) singular(name_, "a zero pivot");
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override { return lu_.solve(rhs); }
-  std::string name() const override { return "umfpack"; }
+  Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override {
+    Eigen::VectorXd x = factorization_.solve(rhs);
+    if (factorization_.info() != Eigen::Success) throw SolverFailure(name_ + ": the solve failed");
+    return x;
+  }
 
  private:
-  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
+  std::string name_;
+  mutable Factorization factorization_;
 };
+
+using CholmodLdlt = Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower>;
+using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+using EigenLu = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
+
+template <class Factorization>
+FactorStatistics EigenSolver<Factorization>::statistics() const {
+  return {};
+}
+template <>
+FactorStatistics EigenSolver<CholmodLdlt>::statistics() const {
+  const cholmod_common& common = factorization_.cholmod();
+  return {common.lnz, common.fl};
+}
+template <>
+FactorStatistics EigenSolver<EigenLdlt>::statistics() const {
+  return {static_cast<double>(factorization_.matrixL().nestedExpression().nonZeros()), -1};
+}
+
+// UMFPACK through its C interface (the calls Eigen's UmfPackLU makes), which also
+// gives its statistics. A is referenced, not copied: the solve's iterative
+// refinement reads it, so it must outlive the factorisation (K_ does).
+class UmfpackSolver final : public SparseDirectSolver {
+ public:
+  explicit UmfpackSolver(std::string name) : name_(std::move(name)) {
+    umfpack_di_defaults(control_);
+    std::fill(std::begin(info_), std::end(info_), -1.0);
+  }
+  ~UmfpackSolver() override {
+    if (numeric_) umfpack_di_free_numeric(&numeric_);
+    if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+  }
+  UmfpackSolver(const UmfpackSolver&) = delete;
+  UmfpackSolver& operator=(const UmfpackSolver&) = delete;
+  double& control(int i) { return control_[i]; }
+  std::string name() const override { return name_; }
+  FactorStatistics statistics() const override {
+    return {info_[UMFPACK_LNZ] + info_[UMFPACK_UNZ], info_[UMFPACK_FLOPS]};
+  }
+
+ protected:
+  void analyze_pattern(const SparseMatrix& A) override {
+    if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+    const int n = static_cast<int>(A.rows());
+    check(umfpack_di_symbolic(n, n, A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), &symbolic_,
+                              control_, info_),
+          "analysis");
+  }
+  void factorize_values(const SparseMatrix& A) override {
+    if (numeric_) umfpack_di_free_numeric(&numeric_);
+    matrix_ = &A;
+    const int status = umfpack_di_numeric(A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(),
+                                          symbolic_, &numeric_, control_, info_);
+    if (status == UMFPACK_WARNING_singular_matrix)
+      singular(name_, "UMFPACK status 1, a zero pivot");
+    check(status, "factorisation");
+  }
+  Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override {
+    Eigen::VectorXd x(rhs.size());
+    double info[UMFPACK_INFO];
+    check(umfpack_di_solve(UMFPACK_A, matrix_->outerIndexPtr(), matrix_->innerIndexPtr(),
+                           matrix_->valuePtr(), x.data(), rhs.data(), numeric_, control_, info),
+          "solve");
+    return x;
+  }
+
+ private:
+  void check(int status, const char* phase) const {
+    if (status != UMFPACK_OK)
+      throw SolverFailure(name_ + ": UMFPACK " + phase + " failed, status " +
+                          std::to_string(status));
+  }
+  std::string name_;
+  double control_[UMFPACK_CONTROL], info_[UMFPACK_INFO];
+  void *symbolic_ = nullptr, *numeric_ = nullptr;
+  const SparseMatrix* matrix_ = nullptr;
+};
+
+// METIS nested dissection of the pattern of the symmetric A, through CHOLMOD (which
+// links METIS on Debian; MUMPS's Debian build does not). perm[k] = the k-th pivot.
+std::vector<int> metis_ordering(const SparseMatrix& A) {
+  cholmod_common common;
+  cholmod_start(&common);
+  cholmod_sparse view{};
+  view.nrow = view.ncol = static_cast<std::size_t>(A.rows());
+  view.nzmax = static_cast<std::size_t>(A.nonZeros());
+  view.p = const_cast<int*>(A.outerIndexPtr());
+  view.i = const_cast<int*>(A.innerIndexPtr());
+  view.x = const_cast<double*>(A.valuePtr());
+  view.stype = -1;  // symmetric: the lower triangle is read
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = view.packed = 1;
+  std::vector<int> perm(static_cast<std::size_t>(A.rows()));
+  const int ok = cholmod_metis(&view, nullptr, 0, 1, perm.data(), &common);
+  cholmod_finish(&common);
+  if (!ok) throw SolverFailure("METIS (through CHOLMOD) could not order the Stokes matrix");
+  return perm;
+}
+
+// MUMPS, sequential, symmetric indefinite (SYM = 2): multifrontal LDLᵀ with
+// threshold 1×1/2×2 pivoting and scaling computed at each factorisation, on the
+// lower triangle of A in coordinate form.
+class MumpsSolver final : public SparseDirectSolver {
+ public:
+  enum class Ordering { metis, pord, amd };
+  MumpsSolver(std::string name, Ordering ordering) : name_(std::move(name)), ordering_(ordering) {
+    id_.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
+    id_.par = 1;
+    id_.sym = 2;
+    call(-1, "initialisation");
+    icntl(1) = icntl(2) = icntl(3) = -1;  // no output
+    icntl(4) = 0;
+    icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
+    icntl(28) = 1;  // sequential analysis
+    icntl(7) = ordering == Ordering::metis ? 1 : ordering == Ordering::pord ? 4 : 0;
+  }
+  ~MumpsSolver() override {
+    id_.job = -2;
+    dmumps_c(&id_);
+  }
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+  std::string name() const override { return name_; }
+  FactorStatistics statistics() const override {
+    return {static_cast<double>(id_.infog[28]), id_.rinfog[2]};  // INFOG(29), RINFOG(3)
+  }
+
+ protected:
+  void analyze_pattern(const SparseMatrix& A) override {
+    rows_.clear(), columns_.clear(), slots_.clear();
+    for (int col = 0; col < A.cols(); ++col)
+      for (int k = A.outerIndexPtr()[col]; k < A.outerIndexPtr()[col + 1]; ++k)
+        if (A.innerIndexPtr()[k] >= col) {
+          rows_.push_back(A.innerIndexPtr()[k] + 1);
+          columns_.push_back(col + 1);
+          slots_.push_back(k);
+        }
+    gather(A);
+    id_.n = static_cast<MUMPS_INT>(A.rows());
+    id_.nnz = static_cast<MUMPS_INT8>(rows_.size());
+    id_.irn = rows_.data();
+    id_.jcn = columns_.data();
+    if (ordering_ == Ordering::metis) {
+      const std::vector<int> perm = metis_ordering(A);
+      position_.assign(perm.size(), 0);
+      for (std::size_t k = 0; k < perm.size(); ++k) position_[perm[k]] = static_cast<int>(k) + 1;
+      id_.perm_in = position_.data();
+    }
+    call(1, "analysis");
+  }
+
+  void factorize_values(const SparseMatrix& A) override {
+    gather(A);
+    // Pivoting can delay pivots past the workspace the analysis estimated: grow it.
+    for (int attempt = 0;; ++attempt) {
+      id_.job = 2;
+      dmumps_c(&id_);
+      const int status = id_.info[0];
+      const bool workspace = status == -8 || status == -9 || status == -14 || status == -15 ||
+                             status == -17 || status == -20;
+      if (!workspace || attempt == 4) break;
+      icntl(14) = std::max(2 * icntl(14), 40);
+    }
+    if (id_.info[0] == -10) singular(name_, "MUMPS INFO(1) = -10");
+    check("factorisation");
+  }
+
+  Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override {
+    Eigen::VectorXd x = rhs;
+    id_.rhs = x.data();
+    call(3, "solve");
+    return x;
+  }
+
+ private:
+  MUMPS_INT& icntl(int i) { return id_.icntl[i - 1]; }  // 1-based, as in the MUMPS guide
+  void gather(const SparseMatrix& A) {
+    values_.resize(slots_.size());
+    for (std::size_t k = 0; k < slots_.size(); ++k) values_[k] = A.valuePtr()[slots_[k]];
+    id_.a = values_.data();
+  }
+  void call(int job, const char* phase) {
+    id_.job = job;
+    dmumps_c(&id_);
+    check(phase);
+  }
+  void check(const char* phase) const {
+    if (id_.info[0] < 0)
+      throw SolverFailure(name_ + ": MUMPS " + phase +
+                          " failed, INFO(1) = " + std::to_string(id_.info[0]) +
+                          ", INFO(2) = " + std::to_string(id_.info[1]));
+  }
+
+  std::string name_;
+  Ordering ordering_;
+  DMUMPS_STRUC_C id_{};
+  std::vector<MUMPS_INT> rows_, columns_, position_;
+  std::vector<int> slots_;  // lower-triangle entry k is A.valuePtr()[slots_[k]]
+  std::vector<double> values_;
+};
+
+std::unique_ptr<SparseDirectSolver> make_umfpack_metis() {
+  auto solver = std::make_unique<UmfpackSolver>("umfpack-metis");
+  solver->control(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+  solver->control(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
+  solver->control(UMFPACK_IRSTEP) =
+      0;  // refinement: up to two more solves, for 5e-15 instead of 2e-14
+  return solver;
+}
+
+std::unique_ptr<SparseDirectSolver> make_cholmod_ldlt() {
+  auto solver = std::make_unique<EigenSolver<CholmodLdlt>>("cholmod-ldlt");
+  cholmod_common& common = solver->factorization().cholmod();
+  common.nmethods = 1;
+  common.method[0].ordering = CHOLMOD_METIS;
+  common.postorder = 1;
+  return solver;
+}
 
 }  // namespace
 
+const std::vector<std::string>& sparse_solver_names() {
+  static const std::vector<std::string> names = {"mumps-metis", "mumps-pord",    "mumps-amd",
+                                                 "umfpack",     "umfpack-metis", "cholmod-ldlt",
+                                                 "eigen-ldlt",  "eigen-lu"};
+  return names;
+}
+
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) {
-  if (name == "umfpack") return std::make_unique<UmfpackSolver>();
-  throw std::invalid_argument("unknown sparse solver '" + name + "'");
+  using Ordering = MumpsSolver::Ordering;
+  if (name == "mumps-metis") return std::make_unique<MumpsSolver>(name, Ordering::metis);
+  if (name == "mumps-pord") return std::make_unique<MumpsSolver>(name, Ordering::pord);
+  if (name == "mumps-amd") return std::make_unique<MumpsSolver>(name, Ordering::amd);
+  if (name == "umfpack") return std::make_unique<UmfpackSolver>(name);
+  if (name == "umfpack-metis") return make_umfpack_metis();
+  if (name == "cholmod-ldlt") return make_cholmod_ldlt();
+  if (name == "eigen-ldlt") return std::make_unique<EigenSolver<EigenLdlt>>(name);
+  if (name == "eigen-lu") return std::make_unique<EigenSolver<EigenLu>>(name);
+  std::string known;
+  for (const auto& n : sparse_solver_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown sparse solver '" + name + "'; known: " + known);
 }
 
 }  // namespace fsi

@@ -1,26 +1,63 @@
 // Sparse direct solvers for the condensed Stokes system, behind one interface so
 // they can be measured against each other (docs/performance.md). The pattern is
-// analysed once; only the values change when χ does.
+// analysed once (ordering, elimination tree); when χ changes only the values do,
+// and only the numeric factorisation is redone.
 #pragma once
 
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace fsi {
+
+// What the last factorisation cost, as the library reports it (−1: not reported).
+// Flop counts follow each library's own convention; compare them within one.
+struct FactorStatistics {
+  double entries = -1;  // stored entries of the factors (L, or L and U)
+  double flops = -1;
+};
 
 class SparseDirectSolver {
  public:
   virtual ~SparseDirectSolver() = default;
-  // Symbolic analysis (ordering) for the pattern of A; done once.
-  virtual void analyze(const Eigen::SparseMatrix<double>& A) = 0;
-  // Numeric factorisation of A (same pattern as analysed). Throws on failure.
-  virtual void factorize(const Eigen::SparseMatrix<double>& A) = 0;
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd& rhs) = 0;
+  // Symbolic analysis of the pattern of the symmetric matrix A (both triangles
+  // stored, compressed); done once.
+  void analyze(const Eigen::SparseMatrix<double>& A);
+  // Numeric factorisation of A, whose pattern must be the analysed one (checked:
+  // std::logic_error otherwise). A singular matrix throws SolverFailure.
+  void factorize(const Eigen::SparseMatrix<double>& A);
+  // x with A x = rhs for the last factorised A.
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   virtual std::string name() const = 0;
+  virtual FactorStatistics statistics() const { return {}; }
+
+  int analyses() const { return analyses_; }
+  int factorizations() const { return factorizations_; }
+
+ protected:
+  virtual void analyze_pattern(const Eigen::SparseMatrix<double>& A) = 0;
+  virtual void factorize_values(const Eigen::SparseMatrix<double>& A) = 0;
+  virtual Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) = 0;
+
+ private:
+  std::vector<int> outer_, inner_;  // the analysed pattern
+  int analyses_ = 0, factorizations_ = 0;
+  bool factorized_ = false;
 };
 
-// "umfpack" (LU), "cholmod-ldlt" (LDLᵀ of the quasi-definite system), ...
+// Names accepted by make_sparse_solver, the default first. Measured against each
+// other in bench/fluid_bench.cpp; docs/performance.md says why the default is it.
+const std::vector<std::string>& sparse_solver_names();
+inline const char* const kDefaultSparseSolver = "mumps-metis";
+
+// "mumps-metis", "mumps-pord", "mumps-amd": MUMPS, symmetric indefinite (LDLᵀ with
+// 1×1/2×2 pivoting), ordering as named (METIS through CHOLMOD). "umfpack": UMFPACK
+// LU, default controls (the former default, the calls Eigen's UmfPackLU makes).
+// "umfpack-metis": its symmetric strategy, METIS, no iterative refinement.
+// "cholmod-ldlt": CHOLMOD simplicial LDLᵀ (METIS); "eigen-ldlt": Eigen's
+// SimplicialLDLT (AMD); "eigen-lu": Eigen's SparseLU (COLAMD). The LDLᵀ without
+// pivoting rely on the system being nearly quasi-definite.
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name);
 
 }  // namespace fsi
