@@ -8,6 +8,9 @@ packages=(
   libeigen3-dev          # dense/sparse linear algebra
   libsuitesparse-dev     # UMFPACK, CHOLMOD (through Eigen's wrappers)
   libmumps-seq-dev       # MUMPS, sequential: the fluid's direct solver
+  libopenblas0-serial    # optimised BLAS (becomes the system's libblas.so.3): 2-3x faster
+                         # factorisations than the reference BLAS (docs/performance.md);
+                         # serial, so results do not depend on a thread count
   libgmsh-dev            # Gmsh SDK: mesh generation and .msh reading
   coinor-libipopt-dev    # IPOPT, the paper's QP solver
   libtomlplusplus-dev    # case files
