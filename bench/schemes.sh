@@ -18,7 +18,7 @@ for cfg in "${configs[@]}"; do
   fi
 done
 python3 - "${configs[@]}" <<'PY'
-import csv, sys
+import csv, json, sys
 configs = [c.split() for c in sys.argv[1:]]
 tables = [list(csv.DictReader(open(f"out/table1-{s}-{c}/table.csv"))) for s, c in configs]
 def k(r):  # "-": not converged; "†": stopped on a chance dip below tol (unsettled)
@@ -35,5 +35,8 @@ for (s, c), t in zip(configs, tables):
     ks = [int(r["k"].split(".")[0]) for r in t if r["status"] == "converged"]
     wall = sum(float(r["wall_s"]) for r in t)
     print(f"\n{s}, {c}: {len(ks)}/{len(t)} rows converged, k at most {max(ks)}, mean {sum(ks)/len(ks):.1f}; sweep wall time {wall:.1f} s", end="")
+    if s == "iqn-ils":  # updates that left the feasible set and were projected back (one QP each)
+        proj = [json.load(open(f"out/table1-{s}-{c}/row-{int(r['row']):02d}/summary.json"))["relaxation"]["projections"] for r in t]
+        print(f"; projections per row {proj}", end="")
 print()
 PY

@@ -23,13 +23,14 @@ std::string convergence_warning(const CouplingResult& r, double tol) {
   for (std::size_t i = n - 11; i + 1 < n; ++i) previous.push_back(r.history[i].increment);
   std::nth_element(previous.begin(), previous.begin() + 5, previous.end());
   const double median = previous[5];
-  const double last = r.history[n - 1].increment, before = r.history[n - 2].increment;
+  const double last = r.history[n - 1].increment;
+  const double before = std::max({r.history[n - 2].increment, r.history[n - 3].increment, r.history[n - 4].increment});
   if (median <= 5 * tol || last >= 0.1 * before) return "";
   char text[320];
   std::snprintf(text, sizeof text,
-                "the increments had not settled (median of the ten before the last %.2e, tol %g) and the "
-                "last fell abruptly from %.2e to %.2e: the stop may be a chance dip below tol; see "
-                "history.csv",
+                "the increments had not settled (median of the ten before the last %.2e, tol %g) and "
+                "fell abruptly (largest of the three before the last %.2e, the last %.2e): the stop may "
+                "be a chance dip below tol; see history.csv",
                 median, tol, before, last);
   return text;
 }

@@ -44,8 +44,9 @@ struct CouplingResult {
 // A stop can be a chance dip below tol of increments that never settled (seen with
 // ε = 1e-6, constant ω: increments wander between 2e-4 and 4e-3 for 88 passes, then
 // one falls to 8e-5). The SPEC's stopping test is kept; this names such a stop: the
-// ten increments before the last had a median above 5·tol AND the last fell below a
-// tenth of the one before it (one abrupt fall, not a trend). Empty if not the case.
+// ten increments before the last had a median above 5·tol AND the last is below a
+// tenth of the largest of the three before it (an abrupt fall, not a trend). Empty
+// if not the case.
 std::string convergence_warning(const CouplingResult& r, double tol);
 
 class FixedPointCoupling {
