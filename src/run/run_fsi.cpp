@@ -42,9 +42,11 @@ Json fluid_json(const PenalisedStokes& stokes) {
   return {{"unknowns", stokes.unknowns()},
           {"nonzeros", stokes.nonzeros()},
           {"solver", stokes.solver_name()},
+          {"analyses", t.analyses},  // symbolic analyses: 1 per run, 0 for a sweep row reusing it
           {"factorizations", t.factorizations},
           {"reused_solutions", t.reused},
           {"assembly_s", t.assembly},
+          {"analysis_s", t.analysis},  // included in factorization_s
           {"factorization_s", t.factorization},
           {"solve_s", t.solve}};
 }

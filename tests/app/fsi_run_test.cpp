@@ -33,6 +33,10 @@ TEST(FsiRun, WritesEveryOutput) {
   for (const char* key : {"total", "mesh", "fluid", "structure", "transfer"})
     EXPECT_TRUE(j["timing_s"].contains(key)) << key;
   EXPECT_EQ(j["relaxation"]["scheme"], "aitken");
+  // The fluid pattern is analysed once; each pass with a new χ refactorises.
+  EXPECT_EQ(j["fluid"]["analyses"], 1);
+  EXPECT_EQ(j["fluid"]["factorizations"].get<int>() + j["fluid"]["reused_solutions"].get<int>(),
+            j["iterations"].get<int>());
   EXPECT_EQ(j["converged"], true);
   EXPECT_NEAR(j["fluid_velocity_l2_in_structure_over_eps"].get<double>(),
               j["fluid_velocity_l2_in_structure"].get<double>() / 1e-5, 1e-9);
