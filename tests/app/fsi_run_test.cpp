@@ -59,6 +59,22 @@ TEST(FsiRun, IterationLimitGivesExitStatus3WithOutputs) {
   fs::remove_all(dir);
 }
 
+// ν = 0.4999999 (allowed: ν < 0.5) used to end in a segmentation fault: λ/μ = 5e6 made
+// the contact QP's KKT check fail in the first pass, and the writer then read the
+// multipliers of an empty QP result. Now the QP passes (backward-error KKT check) and
+// a failure would keep the complete state at rest; either way no crash.
+TEST(FsiRun, NearlyIncompressibleStructureRunsToItsLimit) {
+  const fs::path dir = testing::scratch_dir("fsi-nu");
+  const testing::CliRun r = testing::run_cli(
+      "run --set structure.nu=0.4999999 --set coupling.max_iterations=2 --set output.png=false --out res -q",
+      dir);  // the paper's meshes: where the crash was found
+  EXPECT_EQ(r.status, 3) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  EXPECT_EQ(j["status"], "iteration limit");
+  EXPECT_TRUE(fs::exists(dir / "res/structure.vtu"));
+  fs::remove_all(dir);
+}
+
 TEST(FsiRun, FluidAloneWhenTheCouplingIsSwitchedOff) {
   const fs::path dir = testing::scratch_dir("fluid-only");
   const testing::CliRun r = testing::run_cli("run " + kCoarse + " --set coupling.max_iterations=0 --out res -q", dir);
