@@ -1,6 +1,7 @@
 #include "fluid/penalised_stokes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "fem/quadrature.hpp"
@@ -21,6 +22,19 @@ ElementLoad element_load(const P1Triangle& T, const VectorField& f, const Triang
     }
   }
   return load;
+}
+
+// Two vertices are adjacent iff they share a triangle (a vertex is its own neighbour).
+std::vector<std::vector<int>> vertex_adjacency(const Mesh& mesh) {
+  std::vector<std::vector<int>> adjacent(mesh.num_vertices());
+  for (const auto& tri : mesh.triangles)
+    for (int a : tri)
+      for (int b : tri) adjacent[a].push_back(b);
+  for (auto& list : adjacent) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return adjacent;
 }
 
 }  // namespace
@@ -56,18 +70,45 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
       free_.push_back(d);
     }
 
+  // The number of nonzeros of the whole K (its pattern is built only when the whole
+  // matrix is assembled: the substructured solve never needs it).
+  {
+    std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh);
+    for (int col = 0; col < static_cast<int>(free_.size()); ++col)
+      for (int component = 0; component < 3; ++component)
+        for (int i : adjacent[free_[col] % nv])
+          if (free_index_[component * nv + i] >= 0) ++nonzeros_;
+  }
+  const int n = static_cast<int>(free_.size());
+
+  // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
+  traction_load_ = Eigen::VectorXd::Zero(n);
+  const LineRule line = gauss_legendre(3);
+  for (const auto& [label, h] : bc.tractions)
+    for (const auto& e : mesh.edges_on(label)) {
+      const Point& a = mesh.vertices[e.v[0]];
+      const Point& b = mesh.vertices[e.v[1]];
+      for (std::size_t k = 0; k < line.x.size(); ++k) {
+        const double s = line.x[k];
+        const Point hq = h((1 - s) * a + s * b) * (line.w[k] * (b - a).norm());
+        for (int c = 0; c < 2; ++c) {
+          const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
+          if (r0 >= 0) traction_load_[r0] += hq[c] * (1 - s);
+          if (r1 >= 0) traction_load_[r1] += hq[c] * s;
+        }
+      }
+    }
+}
+
+void PenalisedStokes::build_whole_pattern() {
+  if (K_.rows() == static_cast<Eigen::Index>(free_.size()) && !slot_.empty()) return;
+  const Mesh& mesh = mesh_;
+  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
   // Sparsity pattern of the free–free block, built column by column from vertex
   // adjacency (two dofs couple iff their vertices share a triangle): no triplet list,
   // which at hF = 0.0025 would hold 12 million entries.
   const int n = static_cast<int>(free_.size());
-  std::vector<std::vector<int>> adjacent(nv);
-  for (const auto& tri : mesh.triangles)
-    for (int a : tri)
-      for (int b : tri) adjacent[a].push_back(b);
-  for (auto& list : adjacent) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
+  const std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh);
   std::vector<int> outer_index(n + 1, 0), inner_index;
   for (int col = 0; col < n; ++col) {
     const int j = free_[col] % nv;
@@ -89,30 +130,13 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
   for (int t = 0; t < nt; ++t)
     for (int i = 0; i < 9; ++i)
       for (int j = 0; j < 9; ++j) {
-        const int r = free_index_[fluid_dof(mesh.triangles[t], i, nv)];
-        const int c = free_index_[fluid_dof(mesh.triangles[t], j, nv)];
+        const int r = free_index_[fluid_dof(mesh_.triangles[t], i, nv)];
+        const int c = free_index_[fluid_dof(mesh_.triangles[t], j, nv)];
         if (r < 0 || c < 0) continue;
         const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
         slot_[81 * static_cast<std::size_t>(t) + 9 * i + j] = static_cast<int>(pos - inner);
       }
 
-  // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
-  traction_load_ = Eigen::VectorXd::Zero(n);
-  const LineRule line = gauss_legendre(3);
-  for (const auto& [label, h] : bc.tractions)
-    for (const auto& e : mesh.edges_on(label)) {
-      const Point& a = mesh.vertices[e.v[0]];
-      const Point& b = mesh.vertices[e.v[1]];
-      for (std::size_t k = 0; k < line.x.size(); ++k) {
-        const double s = line.x[k];
-        const Point hq = h((1 - s) * a + s * b) * (line.w[k] * (b - a).norm());
-        for (int c = 0; c < 2; ++c) {
-          const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
-          if (r0 >= 0) traction_load_[r0] += hq[c] * (1 - s);
-          if (r1 >= 0) traction_load_[r1] += hq[c] * s;
-        }
-      }
-    }
 }
 
 void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
@@ -159,6 +183,7 @@ void PenalisedStokes::add_element(int t, double chi, double sign) {
 }
 
 void PenalisedStokes::assemble_full() {
+  build_whole_pattern();
   std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
   rhs_ = traction_load_;
   for (int t = 0; t < mesh_.num_triangles(); ++t) add_element(t, chi_[t], 1.0);
@@ -186,38 +211,20 @@ void PenalisedStokes::assemble() {
   assembled_chi_ = chi_;
 }
 
+std::string PenalisedStokes::solver_name() const {
+  return factorization_ == FluidFactorization::schur ? solver_->name() + "+schur" : solver_->name();
+}
+
 const FluidSolution& PenalisedStokes::solve() {
   if (solved_ && !chi_changed_) {
     ++timing_.reused;
     return solution_;
   }
-  {
-    const Stopwatch clock;
-    assemble();
-    timing_.assembly += clock.elapsed();
-  }
-  {
-    const Stopwatch clock;
-    if (!analysed_) {
-      solver_->analyze(K_);
-      analysed_ = true;
-      timing_.analysis = clock.elapsed();
-      ++timing_.analyses;
-    }
-    solver_->factorize(K_);
-    timing_.factorization += clock.elapsed();
-    ++timing_.factorizations;
-  }
+  const bool substructure =
+      factorization_ == FluidFactorization::schur && !region_too_large_ && (chi_.array() != 0).any();
+  Eigen::VectorXd x = substructure ? solve_substructured() : solve_whole();
+  if (x.size() == 0) x = solve_whole();  // the near region would have been most of D
   const Stopwatch clock;
-  const Eigen::VectorXd x = solver_->solve(rhs_);
-  if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
-  // A nearly singular matrix can factorise without a zero pivot and give garbage:
-  // one product with K (~1% of a factorisation) catches it. The solvers reach
-  // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
-  const double residual = (K_ * x - rhs_).norm(), scale = rhs_.norm();
-  if (!(residual <= 1e-8 * scale))
-    throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
-                        ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
   solved_ = false;  // until the new solution is complete
   Eigen::VectorXd z = z_fixed_;
   for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];
@@ -231,6 +238,158 @@ const FluidSolution& PenalisedStokes::solve() {
   chi_changed_ = false;
   solved_chi_ = chi_;
   return solution_;
+}
+
+// Assembles K (incrementally), factorises all of it, solves.
+Eigen::VectorXd PenalisedStokes::solve_whole() {
+  {
+    const Stopwatch clock;
+    assemble();
+    timing_.assembly += clock.elapsed();
+  }
+  {
+    const Stopwatch clock;
+    if (!analysed_) {
+      solver_->analyze(K_);
+      analysed_ = true;
+      timing_.analysis += clock.elapsed();
+      ++timing_.analyses;
+    }
+    solver_->factorize(K_);
+    timing_.factorization += clock.elapsed();
+    ++timing_.factorizations;
+  }
+  const Stopwatch clock;
+  Eigen::VectorXd x = solver_->solve(rhs_);
+  if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
+  // A nearly singular matrix can factorise without a zero pivot and give garbage:
+  // one product with K (~1% of a factorisation) catches it. The solvers reach
+  // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
+  const double residual = (K_ * x - rhs_).norm(), scale = rhs_.norm();
+  if (!(residual <= 1e-8 * scale))
+    throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
+                        ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
+  timing_.solve += clock.elapsed();
+  return x;
+}
+
+// Through RegionSchurSolver: the far field was factorised when the near region was
+// chosen; per χ only the near region is. An empty vector: the region would be most
+// of D, solve whole.
+Eigen::VectorXd PenalisedStokes::solve_substructured() {
+  if (!region_ || !near_region_covers_chi()) {
+    build_near_region();
+    if (!region_) return {};
+  }
+  const RegionSchurTiming before = region_->timing();
+  const Stopwatch clock;
+  Eigen::VectorXd x = region_->solve([this](int t) { return element_system(t); });
+  const double total = clock.elapsed();
+  const RegionSchurTiming& after = region_->timing();
+  const double assembly = after.near_assembly - before.near_assembly;
+  const double factorization = after.near_factorization - before.near_factorization;
+  timing_.assembly += assembly;
+  timing_.factorization += factorization;
+  timing_.expansion += after.expansion - before.expansion;
+  timing_.solve += total - assembly - factorization;
+  ++timing_.factorizations;
+  return x;
+}
+
+bool PenalisedStokes::near_region_covers_chi() const {
+  for (int t = 0; t < mesh_.num_triangles(); ++t)
+    if (chi_[t] != 0 && !region_->is_near(t)) return false;
+  return true;
+}
+
+// The near region: the triangles meeting the bounding box of χ's support grown by a
+// margin, half the box's smaller side (at least 2 triangle sizes) at first and
+// doubled whenever χ leaves the region, so that a structure moving across D costs
+// a few far-field factorisations, not one per iteration.
+void PenalisedStokes::build_near_region() {
+  region_.reset();
+  const Stopwatch clock;
+  Point lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  double h_max = 0;
+  for (int t = 0; t < mesh_.num_triangles(); ++t) {
+    if (chi_[t] == 0) continue;
+    const auto& tri = mesh_.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Point& a = mesh_.vertices[tri[k]];
+      lo = lo.cwiseMin(a), hi = hi.cwiseMax(a);
+      h_max = std::max(h_max, (a - mesh_.vertices[tri[(k + 1) % 3]]).norm());
+    }
+  }
+  const Point size = hi - lo;
+  region_margin_ = region_margin_ == 0 ? std::max(0.5 * size.minCoeff(), 2 * h_max) : 2 * region_margin_;
+  lo.array() -= region_margin_, hi.array() += region_margin_;
+  const int nt = mesh_.num_triangles();
+  std::vector<char> near(nt, 0);
+  int count = 0;
+  for (int t = 0; t < nt; ++t) {
+    Point a(INFINITY, INFINITY), b(-INFINITY, -INFINITY);
+    for (int v : mesh_.triangles[t]) a = a.cwiseMin(mesh_.vertices[v]), b = b.cwiseMax(mesh_.vertices[v]);
+    if ((a.array() <= hi.array()).all() && (b.array() >= lo.array()).all()) near[t] = 1, ++count;
+  }
+  if (2 * count > nt) {  // no gain over the whole factorisation
+    region_too_large_ = true;
+    return;
+  }
+  region_ = std::make_unique<RegionSchurSolver>(
+      unknowns(), near, [this](int t) { return element_dofs(t); },
+      [this](int t) { return element_system(t); }, traction_load_, dof_rank(), solver_->name());
+  const double elapsed = clock.elapsed();
+  timing_.factorization += elapsed;
+  timing_.far_factorization += elapsed;
+  ++timing_.regions;
+  ++timing_.analyses;
+}
+
+// A fill-reducing order of the unknowns, computed once per mesh: METIS nested
+// dissection of the vertex graph, each vertex's v1, v2, p kept together. On the
+// vertex graph (a third of the nodes, a ninth of the edges of the dof graph) METIS
+// is several times faster than on K, for a fill within a few per cent; it serves
+// every far-field factorisation of the run.
+const std::vector<int>& PenalisedStokes::dof_rank() {
+  if (!dof_rank_.empty()) return dof_rank_;
+  const int nv = mesh_.num_vertices();
+  const std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh_);
+  Eigen::SparseMatrix<double> graph(nv, nv);
+  std::size_t nnz = 0;
+  for (const auto& list : adjacent) nnz += list.size();
+  graph.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  graph.outerIndexPtr()[0] = 0;
+  for (int v = 0, k = 0; v < nv; ++v) {
+    for (int w : adjacent[v]) graph.innerIndexPtr()[k] = w, graph.valuePtr()[k++] = 1.0;
+    graph.outerIndexPtr()[v + 1] = graph.outerIndexPtr()[v] + static_cast<int>(adjacent[v].size());
+  }
+  const std::vector<int> perm = metis_ordering(graph);
+  dof_rank_.assign(free_.size(), 0);
+  for (int position = 0; position < nv; ++position)
+    for (int c = 0; c < 3; ++c) {
+      const int r = free_index_[c * nv + perm[position]];
+      if (r >= 0) dof_rank_[r] = 3 * position + c;
+    }
+  return dof_rank_;
+}
+
+std::array<int, 9> PenalisedStokes::element_dofs(int t) const {
+  std::array<int, 9> dof;
+  for (int k = 0; k < 9; ++k) dof[k] = free_index_[fluid_dof(mesh_.triangles[t], k, mesh_.num_vertices())];
+  return dof;
+}
+
+// The condensed element of triangle t for the current χ and ε, prescribed columns
+// lifted to the load.
+ElementSystem PenalisedStokes::element_system(int t) const {
+  const int nv = mesh_.num_vertices();
+  const auto& tri = mesh_.triangles[t];
+  const CondensedElement ce = condensed_mini_element(geometry_[t], mu_, chi_[t] / eps_, loads_[t]);
+  ElementSystem e{element_dofs(t), ce.K, ce.F};
+  for (int j = 0; j < 9; ++j)
+    if (e.dof[j] < 0)
+      for (int i = 0; i < 9; ++i) e.F[i] -= ce.K(i, j) * z_fixed_[fluid_dof(tri, j, nv)];
+  return e;
 }
 
 void PenalisedStokes::recover_bubbles(const Eigen::VectorXd& z) {

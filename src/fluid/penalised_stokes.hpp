@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fluid/mini_element.hpp"
+#include "fluid/region_schur.hpp"
 #include "fluid/sparse_solver.hpp"
 #include "mesh/mesh.hpp"
 
@@ -37,7 +38,16 @@ struct FluidTiming {
   double assembly = 0, factorization = 0, solve = 0;
   double analysis = 0;  // the one symbolic analysis, part of `factorization`
   int analyses = 0, factorizations = 0, reused = 0;  // reused: χ unchanged, previous solution returned
+  // Substructured solves (RegionSchurSolver): the far-field factorisations (one per
+  // near region, part of `factorization`) and the expansions (part of `solve`).
+  double far_factorization = 0, expansion = 0;
+  int regions = 0;
 };
+
+// How solve() factorises: `schur` keeps the far field's factorisation and its Schur
+// complement for the whole run and refactorises only the region χ can reach
+// (RegionSchurSolver); `whole` refactorises all of K after every χ change.
+enum class FluidFactorization { schur, whole };
 
 class PenalisedStokes {
  public:
@@ -48,6 +58,10 @@ class PenalisedStokes {
   void set_chi(const Eigen::VectorXd& chi);
   // A new penalty ε (the pattern and its symbolic analysis are kept).
   void set_eps(double eps);
+  void set_factorization(FluidFactorization f) { factorization_ = f; }
+  FluidFactorization factorization() const { return factorization_; }
+  // The substructured solver in use (null before the first substructured solve).
+  const RegionSchurSolver* region() const { return region_.get(); }
   // Forget the last solution (the next solve() refactorises), e.g. for a new run.
   void reset();
   const Eigen::VectorXd& chi() const { return chi_; }
@@ -65,9 +79,9 @@ class PenalisedStokes {
   double mu() const { return mu_; }
   double eps() const { return eps_; }
   int unknowns() const { return static_cast<int>(free_.size()); }
-  long nonzeros() const { return K_.nonZeros(); }
+  long nonzeros() const { return nonzeros_; }  // of the whole K
   const FluidTiming& timing() const { return timing_; }
-  std::string solver_name() const { return solver_->name(); }
+  std::string solver_name() const;
   // Assembles K and rhs for the current χ over all triangles, as solve() does after
   // a reset or a new ε, without factorising (for benchmarks and tests).
   void assemble_full();
@@ -78,7 +92,15 @@ class PenalisedStokes {
 
  private:
   void assemble();
+  void build_whole_pattern();
   void add_element(int t, double chi, double sign);
+  ElementSystem element_system(int t) const;
+  std::array<int, 9> element_dofs(int t) const;
+  Eigen::VectorXd solve_whole();
+  Eigen::VectorXd solve_substructured();
+  bool near_region_covers_chi() const;
+  const std::vector<int>& dof_rank();
+  void build_near_region();
   void recover_bubbles(const Eigen::VectorXd& z);
 
   const Mesh& mesh_;
@@ -90,6 +112,12 @@ class PenalisedStokes {
   std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed
   std::vector<int> free_;              // reduced index → full dof
   std::vector<int> slot_;              // 81 per triangle: position in K_.valuePtr(), −1 if not free-free
+  long nonzeros_ = 0;                  // of the whole K (whose pattern is built only if needed)
+  std::vector<int> dof_rank_;          // reduced dof → position in a METIS order (vertex graph)
+  FluidFactorization factorization_ = FluidFactorization::whole;
+  std::unique_ptr<RegionSchurSolver> region_;
+  double region_margin_ = 0;           // the near region: χ's support's box grown by this
+  bool region_too_large_ = false;      // the near region would be most of D: solve whole
   Eigen::VectorXd traction_load_;      // ∫ h·w on the reduced dofs
   Eigen::SparseMatrix<double> K_;
   Eigen::VectorXd rhs_;

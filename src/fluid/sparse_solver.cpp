@@ -160,6 +160,8 @@ class UmfpackSolver final : public SparseDirectSolver {
 
 // METIS nested dissection of the pattern of the symmetric A, through CHOLMOD (which
 // links METIS on Debian; MUMPS's Debian build does not). perm[k] = the k-th pivot.
+}  // namespace
+
 std::vector<int> metis_ordering(const SparseMatrix& A) {
   cholmod_common common;
   cholmod_start(&common);
@@ -181,12 +183,14 @@ std::vector<int> metis_ordering(const SparseMatrix& A) {
   return perm;
 }
 
+namespace {
+
 // MUMPS, sequential, symmetric indefinite (SYM = 2): multifrontal LDLᵀ with
 // threshold 1×1/2×2 pivoting and scaling computed at each factorisation, on the
 // lower triangle of A in coordinate form.
 class MumpsSolver final : public SparseDirectSolver {
  public:
-  enum class Ordering { metis, pord, amd };
+  enum class Ordering { metis, pord, amd, given };
   MumpsSolver(std::string name, Ordering ordering) : name_(std::move(name)), ordering_(ordering) {
     id_.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
     id_.par = 1;
@@ -196,7 +200,7 @@ class MumpsSolver final : public SparseDirectSolver {
     icntl(4) = 0;
     icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
     icntl(28) = 1;  // sequential analysis
-    icntl(7) = ordering == Ordering::metis ? 1 : ordering == Ordering::pord ? 4 : 0;
+    icntl(7) = ordering == Ordering::metis || ordering == Ordering::given ? 1 : ordering == Ordering::pord ? 4 : 0;
   }
   ~MumpsSolver() override {
     id_.job = -2;
@@ -224,8 +228,10 @@ class MumpsSolver final : public SparseDirectSolver {
     id_.nnz = static_cast<MUMPS_INT8>(rows_.size());
     id_.irn = rows_.data();
     id_.jcn = columns_.data();
-    if (ordering_ == Ordering::metis) {
-      const std::vector<int> perm = metis_ordering(A);
+    if (ordering_ == Ordering::metis || ordering_ == Ordering::given) {
+      if (ordering_ == Ordering::given && order_.size() != static_cast<std::size_t>(A.rows()))
+        throw std::invalid_argument(name_ + ": the given order does not list every unknown");
+      const std::vector<int> perm = ordering_ == Ordering::given ? order_ : metis_ordering(A);
       position_.assign(perm.size(), 0);
       for (std::size_t k = 0; k < perm.size(); ++k) position_[perm[k]] = static_cast<int>(k) + 1;
       id_.perm_in = position_.data();
@@ -277,6 +283,11 @@ class MumpsSolver final : public SparseDirectSolver {
 
   std::string name_;
   Ordering ordering_;
+
+ public:
+  std::vector<int> order_;  // Ordering::given: the unknowns in elimination order
+
+ private:
   DMUMPS_STRUC_C id_{};
   std::vector<MUMPS_INT> rows_, columns_, position_;
   std::vector<int> slots_;  // lower-triangle entry k is A.valuePtr()[slots_[k]]
@@ -308,6 +319,12 @@ const std::vector<std::string>& sparse_solver_names() {
                                                  "umfpack",     "umfpack-metis", "cholmod-ldlt",
                                                  "eigen-ldlt",  "eigen-lu"};
   return names;
+}
+
+std::unique_ptr<SparseDirectSolver> make_mumps_solver(std::vector<int> order) {
+  auto solver = std::make_unique<MumpsSolver>("mumps-given-order", MumpsSolver::Ordering::given);
+  solver->order_ = std::move(order);
+  return solver;
 }
 
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) {

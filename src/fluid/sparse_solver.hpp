@@ -60,4 +60,13 @@ inline const char* const kDefaultSparseSolver = "mumps-metis";
 // pivoting rely on the system being nearly quasi-definite.
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name);
 
+// MUMPS as "mumps-metis" but with the elimination order given (order[k] = the k-th
+// pivot; a permutation of the unknowns), e.g. to keep a dense block last.
+std::unique_ptr<SparseDirectSolver> make_mumps_solver(std::vector<int> order);
+
+// METIS nested dissection of the pattern of the symmetric A (both triangles stored,
+// compressed), through CHOLMOD, which links METIS on Debian (MUMPS's Debian build
+// does not). perm[k] = the k-th pivot.
+std::vector<int> metis_ordering(const Eigen::SparseMatrix<double>& A);
+
 }  // namespace fsi

@@ -282,6 +282,7 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     p.h = s.number("h", p.h, left_open(0, c.obstacle.r));
     p.mesh = resolve_path(s.text("mesh", ""), case_path);
     p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
+    p.factorization = s.choice("factorization", p.factorization, {"schur", "whole"});
     s.reject_unknown();
     c.fluid = p;
   } else {
@@ -365,7 +366,7 @@ std::string to_toml(const Case& c) {
   if (c.fluid) {
     const auto& f = *c.fluid;
     toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},
-                   {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}};
+                   {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization}};
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
     t.insert("fluid", ft);
   }

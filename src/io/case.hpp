@@ -34,6 +34,9 @@ struct FluidParams {
   double h = 0.01;                  // hF
   std::string mesh;                 // optional .msh file (resolved path)
   std::string chi = "barycentre";   // "barycentre" | "area-fraction"
+  // "schur": the far field factorised once per run, only the region around the
+  // structure per χ; "whole": all of K per χ (PenalisedStokes, FluidFactorization).
+  std::string factorization = "schur";
 };
 
 struct CouplingParams {

@@ -51,6 +51,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   const Point f_F = f.f;
   s.stokes = std::make_unique<PenalisedStokes>(*s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; },
                                                paper_boundary_conditions(*s.mesh, f));
+  s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur);
   return s;
 }
 

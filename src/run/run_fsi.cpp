@@ -39,7 +39,7 @@ void write_history(const std::string& path, const std::vector<IterationRecord>& 
 
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
-  return {{"unknowns", stokes.unknowns()},
+  Json j = {{"unknowns", stokes.unknowns()},
           {"nonzeros", stokes.nonzeros()},
           {"solver", stokes.solver_name()},
           {"analyses", t.analyses},  // symbolic analyses: 1 per run, 0 for a sweep row reusing it
@@ -49,6 +49,18 @@ Json fluid_json(const PenalisedStokes& stokes) {
           {"analysis_s", t.analysis},  // included in factorization_s
           {"factorization_s", t.factorization},
           {"solve_s", t.solve}};
+  j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
+  // The substructured solve: far-field factorisations (one per near region; their
+  // time is part of factorization_s), the expansions (part of solve_s), the last
+  // region's size.
+  j["far_field_factorizations"] = t.regions;
+  j["far_factorization_s"] = t.far_factorization;
+  j["expansion_s"] = t.expansion;
+  if (const RegionSchurSolver* r = stokes.region()) {
+    j["near_unknowns"] = r->near_unknowns();
+    j["interface_unknowns"] = r->interface_unknowns();
+  }
+  return j;
 }
 
 // ‖v_h‖ over the fluid triangles where χ = 1 (the region the penalty acts on).

@@ -1,0 +1,165 @@
+#include "fluid/mumps_schur.hpp"
+
+#include <dmumps_c.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "common/errors.hpp"
+#include "fluid/sparse_solver.hpp"
+
+namespace fsi {
+
+struct MumpsSchur::Mumps {
+  DMUMPS_STRUC_C id{};
+  std::vector<MUMPS_INT> rows, columns, position, listvar;
+  std::vector<double> values, schur, redrhs;
+  bool initialised = false;
+
+  MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }  // 1-based, as in the MUMPS guide
+  void call(int job, const char* phase) {
+    id.job = job;
+    dmumps_c(&id);
+    check(phase);
+  }
+  void check(const char* phase) const {
+    if (id.info[0] < 0)
+      throw SolverFailure(std::string("MUMPS (Schur complement) ") + phase + " failed, INFO(1) = " +
+                          std::to_string(id.info[0]) + ", INFO(2) = " + std::to_string(id.info[1]));
+  }
+};
+
+MumpsSchur::MumpsSchur() : m_(std::make_unique<Mumps>()) {
+  m_->id.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
+  m_->id.par = 1;
+  m_->id.sym = 2;  // symmetric indefinite: LDLᵀ with 1×1/2×2 pivoting
+  m_->call(-1, "initialisation");
+  m_->initialised = true;
+  m_->icntl(1) = m_->icntl(2) = m_->icntl(3) = -1;  // no output
+  m_->icntl(4) = 0;
+  m_->icntl(28) = 1;  // sequential analysis
+}
+
+MumpsSchur::~MumpsSchur() {
+  if (m_ && m_->initialised) {
+    m_->id.job = -2;
+    dmumps_c(&m_->id);
+  }
+}
+
+void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vector<int>& gamma,
+                           const std::vector<int>& order) {
+  const int n = static_cast<int>(A.rows());
+  const int ns = static_cast<int>(gamma.size());
+  if (!A.isCompressed() || A.rows() != A.cols() || ns == 0 || ns >= n)
+    throw std::invalid_argument("MumpsSchur: a square compressed matrix and 0 < |Γ| < n unknowns");
+  Mumps& m = *m_;
+  m.rows.clear(), m.columns.clear(), m.values.clear();
+  for (int col = 0; col < n; ++col)
+    for (int k = A.outerIndexPtr()[col]; k < A.outerIndexPtr()[col + 1]; ++k)
+      if (A.innerIndexPtr()[k] >= col) {  // the lower triangle, 1-based coordinates
+        m.rows.push_back(A.innerIndexPtr()[k] + 1);
+        m.columns.push_back(col + 1);
+        m.values.push_back(A.valuePtr()[k]);
+      }
+  // METIS on the whole pattern, the Schur unknowns moved last (MUMPS eliminates them
+  // last in any case: they form the root of the elimination tree).
+  std::vector<char> in_gamma(n, 0);
+  for (int g : gamma) {
+    if (g < 0 || g >= n || in_gamma[g]) throw std::invalid_argument("MumpsSchur: Γ must be distinct unknowns");
+    in_gamma[g] = 1;
+  }
+  if (!order.empty() && order.size() != static_cast<std::size_t>(n))
+    throw std::invalid_argument("MumpsSchur: the elimination order must list every unknown");
+  const std::vector<int> perm = order.empty() ? metis_ordering(A) : order;
+  m.position.assign(n, 0);
+  int next = 1;
+  for (int v : perm)
+    if (!in_gamma[v]) m.position[v] = next++;
+  for (int g : gamma) m.position[g] = next++;
+  if (next != n + 1 || std::count(m.position.begin(), m.position.end(), 0) != 0)
+    throw std::invalid_argument("MumpsSchur: the elimination order is not a permutation");
+  m.listvar.resize(ns);
+  for (int k = 0; k < ns; ++k) m.listvar[k] = gamma[k] + 1;
+  m.schur.assign(static_cast<std::size_t>(ns) * ns, 0.0);
+
+  DMUMPS_STRUC_C& id = m.id;
+  id.n = n;
+  id.nnz = static_cast<MUMPS_INT8>(m.rows.size());
+  id.irn = m.rows.data();
+  id.jcn = m.columns.data();
+  id.a = m.values.data();
+  id.perm_in = m.position.data();
+  m.icntl(7) = 1;   // the ordering given in perm_in
+  m.icntl(19) = 1;  // Schur complement returned on the host, by rows
+  id.size_schur = ns;
+  id.listvar_schur = m.listvar.data();
+  id.schur = m.schur.data();
+  m.call(1, "analysis");
+  // Pivoting can delay pivots past the workspace the analysis estimated: grow it.
+  for (int attempt = 0;; ++attempt) {
+    id.job = 2;
+    dmumps_c(&id);
+    const int status = id.info[0];
+    const bool workspace = status == -8 || status == -9 || status == -14 || status == -15 ||
+                           status == -17 || status == -20;
+    if (!workspace || attempt == 4) break;
+    m.icntl(14) = std::max(2 * m.icntl(14), 40);
+  }
+  if (id.info[0] == -10)
+    throw SolverFailure("MUMPS could not factorise the fluid far from the structure: it is singular "
+                        "(INFO(1) = -10); check the Dirichlet boundary");
+  m.check("factorisation");
+  // Returned by rows; for a symmetric matrix only its lower triangle is filled.
+  S_.resize(ns, ns);
+  for (int i = 0; i < ns; ++i)
+    for (int j = 0; j <= i; ++j) S_(i, j) = S_(j, i) = m.schur[static_cast<std::size_t>(i) * ns + j];
+  m.schur = {};
+  condensed_ = expanded_ = false;
+}
+
+Eigen::VectorXd MumpsSchur::condense(const Eigen::VectorXd& b) {
+  Mumps& m = *m_;
+  if (S_.size() == 0) throw std::logic_error("MumpsSchur: condense() before factorize()");
+  if (b.size() != m.id.n) throw std::invalid_argument("MumpsSchur: right-hand side of the wrong size");
+  b_ = b;
+  Eigen::VectorXd work = b;
+  m.redrhs.assign(S_.rows(), 0.0);
+  m.id.rhs = work.data();
+  m.id.nrhs = 1;
+  m.id.lrhs = m.id.n;
+  m.id.redrhs = m.redrhs.data();
+  m.id.lredrhs = static_cast<MUMPS_INT>(S_.rows());
+  m.icntl(26) = 1;  // forward elimination only, the reduced right-hand side in REDRHS
+  m.call(3, "condensation");
+  m.icntl(26) = 0;
+  condensed_ = true;
+  expanded_ = false;
+  return Eigen::Map<const Eigen::VectorXd>(m.redrhs.data(), S_.rows());
+}
+
+Eigen::VectorXd MumpsSchur::expand(const Eigen::VectorXd& x_gamma) {
+  Mumps& m = *m_;
+  if (!condensed_) throw std::logic_error("MumpsSchur: expand() before condense()");
+  if (x_gamma.size() != S_.rows()) throw std::invalid_argument("MumpsSchur: x_Γ of the wrong size");
+  // MUMPS keeps the forward elimination of a condensation for one expansion only.
+  if (expanded_) condense(Eigen::VectorXd(b_));
+  Eigen::VectorXd x = b_;
+  std::copy(x_gamma.data(), x_gamma.data() + x_gamma.size(), m.redrhs.begin());
+  m.id.rhs = x.data();
+  m.id.nrhs = 1;
+  m.id.lrhs = m.id.n;
+  m.id.redrhs = m.redrhs.data();
+  m.id.lredrhs = static_cast<MUMPS_INT>(S_.rows());
+  m.icntl(26) = 2;  // backward substitution from x_Γ given in REDRHS
+  m.call(3, "expansion");
+  m.icntl(26) = 0;
+  expanded_ = true;
+  return x;
+}
+
+double MumpsSchur::factor_entries() const { return static_cast<double>(m_->id.infog[28]); }
+double MumpsSchur::factor_flops() const { return m_->id.rinfog[2]; }
+
+}  // namespace fsi

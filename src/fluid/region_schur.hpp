@@ -1,0 +1,83 @@
+// The penalised Stokes system solved by substructuring: the triangles χ can reach
+// (the "near" region, around the structure) are kept apart from the rest (the far
+// field, where χ = 0 in every fixed-point iteration). With Γ the unknowns shared by
+// both parts, F the other far-field unknowns and I the other near unknowns,
+//
+//     K = [K_FF  K_FΓ      0   ]      far field: assembled and factorised once, with
+//         [K_ΓF  K_ΓΓ(χ)  K_ΓI(χ)]    its Schur complement S = K_ΓΓ^far − K_ΓF K_FF⁻¹ K_FΓ
+//         [0     K_IΓ(χ)  K_II(χ)]    (MumpsSchur);
+//
+// per χ only the near system M(χ) = [S + K_ΓΓ^near(χ)  K_ΓI(χ); K_IΓ(χ)  K_II(χ)] is
+// assembled and factorised (a few per cent of the unknowns), and x_F is recovered by
+// the expansion. The solution is that of K x = b up to round-off (tested against the
+// whole-matrix solve). docs/performance.md gives the cost against refactorising K.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fluid/mini_element.hpp"
+#include "fluid/mumps_schur.hpp"
+#include "fluid/sparse_solver.hpp"
+
+namespace fsi {
+
+// A triangle's contribution: its 9 unknowns (reduced indices; −1 where prescribed,
+// whose values are already lifted into F), the condensed matrix and load.
+struct ElementSystem {
+  std::array<int, 9> dof;
+  Matrix9d K;
+  Vector9d F;
+};
+using ElementFunction = std::function<ElementSystem(int t)>;
+using ElementDofs = std::function<std::array<int, 9>(int t)>;  // the dof part alone
+
+struct RegionSchurTiming {
+  double far_factorization = 0;  // once: analysis + partial factorisation + condensation
+  double near_assembly = 0, near_factorization = 0, near_solve = 0, expansion = 0;
+  int near_factorizations = 0;
+};
+
+class RegionSchurSolver {
+ public:
+  // n unknowns; near[t] marks the near triangles (at least one, not all); `load` is
+  // a constant load on the unknowns added to the elements' (tractions); rank[d]: the
+  // position of unknown d in a fill-reducing order of all unknowns (empty: METIS on
+  // the far field's matrix). Assembles and factorises the far field with element(t)
+  // for the triangles not near.
+  RegionSchurSolver(int n, const std::vector<char>& near, const ElementDofs& dofs,
+                    const ElementFunction& element, const Eigen::VectorXd& load,
+                    const std::vector<int>& rank = {},
+                    const std::string& near_solver = kDefaultSparseSolver);
+
+  // x with K x = b, the near triangles assembled with element(t) now. Throws
+  // SolverFailure if a factorisation fails or the residual ‖Kx − b‖ exceeds
+  // 1e-8 ‖b‖ (a nearly singular system).
+  Eigen::VectorXd solve(const ElementFunction& element);
+
+  bool is_near(int t) const { return near_[t] != 0; }
+  int far_unknowns() const { return static_cast<int>(far_dofs_.size()); }
+  int interface_unknowns() const { return static_cast<int>(gamma_.size()); }
+  int near_unknowns() const { return static_cast<int>(near_dofs_.size()); }
+  const RegionSchurTiming& timing() const { return timing_; }
+
+ private:
+  std::vector<char> near_;
+  std::vector<int> near_triangles_;
+  std::vector<int> far_dofs_;   // far local → reduced (F then Γ)
+  std::vector<int> near_dofs_;  // near local → reduced (Γ then I)
+  std::vector<int> gamma_;      // Γ's far-local indices, in the order of the near-local 0..|Γ|−1
+  Eigen::SparseMatrix<double> K_far_, M_;
+  Eigen::VectorXd b_far_, load_near_, y_gamma_;
+  MumpsSchur far_;
+  std::unique_ptr<SparseDirectSolver> near_solver_;
+  RegionSchurTiming timing_;
+  int n_;
+};
+
+}  // namespace fsi

@@ -1,0 +1,91 @@
+// The substructured fluid solve (RegionSchurSolver behind PenalisedStokes with
+// FluidFactorization::schur) gives the whole-matrix solve's solution, through χ
+// changes inside the near region (no new far-field factorisation), a χ that leaves
+// it (a new region) and a new ε; a χ covering most of D falls back to the whole solve.
+#include <gtest/gtest.h>
+
+#include "fluid/penalised_stokes.hpp"
+#include "support/structured_mesh.hpp"
+
+namespace fsi {
+namespace {
+
+struct Box {
+  Mesh mesh = testing::structured_rectangle(1.0, 1.0, 16, 16);
+  // χ = 1 on the triangles whose barycentre lies in [x0, x0 + w] × [y0, y0 + h].
+  Eigen::VectorXd block(double x0, double y0, double w, double h) const {
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(mesh.num_triangles());
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      Point m = Point::Zero();
+      for (int v : mesh.triangles[t]) m += mesh.vertices[v] / 3.0;
+      if (m.x() > x0 && m.x() < x0 + w && m.y() > y0 && m.y() < y0 + h) c[t] = 1.0;
+    }
+    return c;
+  }
+  PenalisedStokes stokes(double eps, FluidFactorization f) const {
+    FluidBoundaryConditions bc;
+    for (const char* name : {"left", "bottom", "top"}) bc.dirichlet_labels.push_back(mesh.label(name));
+    bc.g = [](const Point& x) { return x.y() > 1 - 1e-12 ? Point(x.x() * (1 - x.x()), 0) : Point(0, 0); };
+    bc.tractions.push_back({mesh.label("right"), [](const Point& x) { return Point(-x.y(), 0.5); }});
+    PenalisedStokes s(mesh, 0.01, eps, [](const Point& x) { return Point(x.y(), -9.81); }, bc);
+    s.set_factorization(f);
+    return s;
+  }
+};
+
+double relative_difference(const FluidSolution& a, const FluidSolution& b) {
+  const double scale = a.v1.norm() + a.v2.norm() + a.p.norm() + a.bubble.norm();
+  return ((a.v1 - b.v1).norm() + (a.v2 - b.v2).norm() + (a.p - b.p).norm() + (a.bubble - b.bubble).norm()) /
+         scale;
+}
+
+TEST(RegionSchur, GivesTheWholeSolveThroughChiChangesARegionChangeAndANewEps) {
+  const Box box;
+  PenalisedStokes whole = box.stokes(1e-5, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-5, FluidFactorization::schur);
+  struct Step {
+    Eigen::VectorXd chi;
+    double eps;
+    int regions;  // far-field factorisations so far
+  };
+  const std::vector<Step> steps = {
+      {box.block(0.30, 0.40, 0.30, 0.15), 1e-5, 1},
+      {box.block(0.32, 0.37, 0.30, 0.15), 1e-5, 1},  // a small move: the same region
+      {box.block(0.34, 0.35, 0.30, 0.16), 1e-7, 1},  // and a new ε
+      {box.block(0.05, 0.75, 0.20, 0.15), 1e-7, 2},  // far away: a new region
+  };
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    whole.set_chi(steps[k].chi), whole.set_eps(steps[k].eps);
+    schur.set_chi(steps[k].chi), schur.set_eps(steps[k].eps);
+    const FluidSolution& a = whole.solve();
+    const FluidSolution& b = schur.solve();
+    EXPECT_LT(relative_difference(a, b), 1e-10) << "step " << k;
+    EXPECT_EQ(schur.timing().regions, steps[k].regions) << "step " << k;
+    EXPECT_EQ(schur.timing().factorizations, static_cast<int>(k) + 1) << "step " << k;
+  }
+  ASSERT_NE(schur.region(), nullptr);
+  EXPECT_GT(schur.region()->interface_unknowns(), 0);
+  EXPECT_LT(schur.region()->near_unknowns(), schur.unknowns() / 2);
+}
+
+TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
+  const Box box;
+  PenalisedStokes whole = box.stokes(1e-4, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-4, FluidFactorization::schur);
+  const Eigen::VectorXd chi = box.block(0.1, 0.1, 0.8, 0.8);
+  whole.set_chi(chi), schur.set_chi(chi);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_EQ(schur.region(), nullptr);
+  EXPECT_EQ(schur.timing().regions, 0);
+}
+
+TEST(RegionSchur, WithoutAStructureSolvesWhole) {
+  const Box box;
+  PenalisedStokes whole = box.stokes(1e-4, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-4, FluidFactorization::schur);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-12);
+  EXPECT_EQ(schur.region(), nullptr);
+}
+
+}  // namespace
+}  // namespace fsi
