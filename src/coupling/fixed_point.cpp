@@ -43,6 +43,15 @@ CouplingResult FixedPointCoupling::run() {
   } catch (const SolverFailure& e) {
     result.failure = e.what();
   }
+  // The outputs need the fields everywhere: the last fluid solve's deferred
+  // expansion to the far field.
+  if (p_.fluid.has_solution()) {
+    try {
+      p_.fluid.complete();
+    } catch (const SolverFailure& e) {
+      if (result.failure.empty()) result.failure = std::string("the fluid solve (far field) failed: ") + e.what();
+    }
+  }
   result.projections = p_.relaxation.projections();
   return result;
 }
@@ -73,7 +82,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
       const Stopwatch clock;
       const int reused_before = p_.fluid.timing().reused;
       try {
-        fluid = &p_.fluid.solve();
+        fluid = &p_.fluid.solve(/*near_only=*/true);
       } catch (const std::exception& e) {
         fail("the fluid solve", e.what());
       }
@@ -83,9 +92,15 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     Eigen::VectorXd b_S;
     {
       const Stopwatch clock;  // step 3: b_S from v∘φ^k, p∘φ^k (eq. 33)
-      const FluidField field(p_.fluid_locator, *fluid);
       try {
-        b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+        try {
+          const FluidField field(p_.fluid_locator, *fluid);
+          b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+        } catch (const FieldNotComputed&) {  // a vertex samples the far field: expand
+          fluid = &p_.fluid.complete();
+          const FluidField field(p_.fluid_locator, *fluid);
+          b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+        }
       } catch (const std::exception& e) {
         fail("the force transfer", e.what());
       }

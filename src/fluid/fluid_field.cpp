@@ -1,6 +1,7 @@
 #include "fluid/fluid_field.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "fem/p1.hpp"
 #include "fem/quadrature.hpp"
@@ -13,7 +14,16 @@ FluidField::FluidField(const PointLocator& locator, const FluidSolution& solutio
 
 FluidValue FluidField::at(const Point& x) const { return at(locator_.locate_or_nearest(x)); }
 
+namespace {
+void require_exact(const FluidSolution& s, int triangle) {
+  if (s.exact_on && !(*s.exact_on)[triangle])
+    throw FieldNotComputed("the fluid solution is exact near the structure only; fluid triangle " +
+                           std::to_string(triangle) + " is outside that region");
+}
+}  // namespace
+
 FluidValue FluidField::at(const Location& where) const {
+  require_exact(solution_, where.triangle);
   const auto& tri = locator_.mesh().triangles[where.triangle];
   const Eigen::Vector3d& l = where.lambda;
   FluidValue out;
@@ -27,6 +37,7 @@ FluidValue FluidField::at(const Location& where) const {
 }
 
 Eigen::Matrix2d FluidField::velocity_gradient(const Location& where) const {
+  require_exact(solution_, where.triangle);
   const auto& tri = locator_.mesh().triangles[where.triangle];
   const P1Triangle T(locator_.mesh(), where.triangle);
   Eigen::Matrix2d g = Eigen::Matrix2d::Zero();

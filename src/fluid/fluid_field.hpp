@@ -4,11 +4,18 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <stdexcept>
 
 #include "fluid/penalised_stokes.hpp"
 #include "mesh/point_locator.hpp"
 
 namespace fsi {
+
+// A point whose fluid triangle lies outside the part of D where a near-only solution
+// (PenalisedStokes::solve(true)) is exact: complete() the solution first.
+struct FieldNotComputed : std::logic_error {
+  using std::logic_error::logic_error;
+};
 
 struct FluidValue {
   Point v;

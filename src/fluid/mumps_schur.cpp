@@ -55,13 +55,21 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
   if (!A.isCompressed() || A.rows() != A.cols() || ns == 0 || ns >= n)
     throw std::invalid_argument("MumpsSchur: a square compressed matrix and 0 < |Γ| < n unknowns");
   Mumps& m = *m_;
+  // The lower triangle in 1-based coordinates. If A holds only its lower triangle,
+  // MUMPS reads the values in place (no copy: 19 MB at hF = 0.0025).
+  std::size_t lower = 0;
+  for (int col = 0; col < n; ++col)
+    for (int k = A.outerIndexPtr()[col]; k < A.outerIndexPtr()[col + 1]; ++k) lower += A.innerIndexPtr()[k] >= col;
+  const bool in_place = lower == static_cast<std::size_t>(A.nonZeros());
   m.rows.clear(), m.columns.clear(), m.values.clear();
+  m.rows.reserve(lower), m.columns.reserve(lower);
+  if (!in_place) m.values.reserve(lower);
   for (int col = 0; col < n; ++col)
     for (int k = A.outerIndexPtr()[col]; k < A.outerIndexPtr()[col + 1]; ++k)
-      if (A.innerIndexPtr()[k] >= col) {  // the lower triangle, 1-based coordinates
+      if (A.innerIndexPtr()[k] >= col) {
         m.rows.push_back(A.innerIndexPtr()[k] + 1);
         m.columns.push_back(col + 1);
-        m.values.push_back(A.valuePtr()[k]);
+        if (!in_place) m.values.push_back(A.valuePtr()[k]);
       }
   // METIS on the whole pattern, the Schur unknowns moved last (MUMPS eliminates them
   // last in any case: they form the root of the elimination tree).
@@ -89,7 +97,7 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
   id.nnz = static_cast<MUMPS_INT8>(m.rows.size());
   id.irn = m.rows.data();
   id.jcn = m.columns.data();
-  id.a = m.values.data();
+  id.a = in_place ? const_cast<double*>(A.valuePtr()) : m.values.data();
   id.perm_in = m.position.data();
   m.icntl(7) = 1;   // the ordering given in perm_in
   m.icntl(19) = 1;  // Schur complement returned on the host, by rows
@@ -111,6 +119,11 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
     throw SolverFailure("MUMPS could not factorise the fluid far from the structure: it is singular "
                         "(INFO(1) = -10); check the Dirichlet boundary");
   m.check("factorisation");
+  // The solution phase does not read A (no iterative refinement, no error analysis):
+  // its coordinate copy goes (20–40 MB at hF = 0.0025).
+  m.rows = {}, m.columns = {}, m.values = {};
+  id.irn = id.jcn = nullptr;
+  id.a = nullptr;
   // Returned by rows; for a symmetric matrix only its lower triangle is filled.
   S_.resize(ns, ns);
   for (int i = 0; i < ns; ++i)

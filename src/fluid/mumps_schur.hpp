@@ -22,7 +22,8 @@ class MumpsSchur {
   MumpsSchur(const MumpsSchur&) = delete;
   MumpsSchur& operator=(const MumpsSchur&) = delete;
 
-  // Analyses and factorises A (symmetric, both triangles stored, compressed), with the
+  // Analyses and factorises A (symmetric, compressed; both triangles stored or the
+  // lower one only — the latter saves a copy of the values), with the
   // unknowns `gamma` (0-based, distinct, not empty) kept as the Schur complement.
   // `order`: the unknowns in a fill-reducing elimination order (a permutation), or
   // empty for METIS on A's pattern; Γ is eliminated last either way. Throws

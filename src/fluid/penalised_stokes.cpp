@@ -149,6 +149,7 @@ void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
 
 void PenalisedStokes::set_eps(double eps) {
   if (eps != eps_) {
+    if (pending_expansion_) complete();  // its bubbles need the old ε
     eps_ = eps;
     chi_changed_ = true;
   }
@@ -156,6 +157,7 @@ void PenalisedStokes::set_eps(double eps) {
 
 void PenalisedStokes::reset() {
   solved_ = solved_once_ = false;
+  pending_expansion_ = false;
   assembled_ = false;
   chi_changed_ = true;
   chi_.setZero();
@@ -215,29 +217,48 @@ std::string PenalisedStokes::solver_name() const {
   return factorization_ == FluidFactorization::schur ? solver_->name() + "+schur" : solver_->name();
 }
 
-const FluidSolution& PenalisedStokes::solve() {
+const FluidSolution& PenalisedStokes::solve(bool near_only) {
   if (solved_ && !chi_changed_) {
     ++timing_.reused;
-    return solution_;
+    return near_only ? solution_ : complete();
   }
   const bool substructure =
       factorization_ == FluidFactorization::schur && !region_too_large_ && (chi_.array() != 0).any();
-  Eigen::VectorXd x = substructure ? solve_substructured() : solve_whole();
-  if (x.size() == 0) x = solve_whole();  // the near region would have been most of D
+  if (!substructure || !solve_substructured()) {
+    const Eigen::VectorXd x = solve_whole();
+    const Stopwatch clock;
+    solved_ = false;  // until the new solution is complete
+    store(x, chi_);
+    pending_expansion_ = false;
+    timing_.solve += clock.elapsed();
+  }
+  solved_ = solved_once_ = true;
+  chi_changed_ = false;
+  solved_chi_ = chi_;
+  return near_only ? solution_ : complete();
+}
+
+const FluidSolution& PenalisedStokes::complete() {
+  if (!pending_expansion_) return solution_;
   const Stopwatch clock;
-  solved_ = false;  // until the new solution is complete
+  store(region_->expand(), solved_chi_);  // the χ of the last solve
+  pending_expansion_ = false;
+  const double elapsed = clock.elapsed();
+  timing_.solve += elapsed;
+  timing_.expansion += elapsed;
+  return solution_;
+}
+
+// The fields from the reduced solution x (computed with χ = chi), everywhere.
+void PenalisedStokes::store(const Eigen::VectorXd& x, const Eigen::VectorXd& chi) {
   Eigen::VectorXd z = z_fixed_;
   for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];
   const int nv = mesh_.num_vertices();
   solution_.v1 = z.segment(0, nv);
   solution_.v2 = z.segment(nv, nv);
   solution_.p = z.segment(2 * nv, nv);
-  recover_bubbles(z);
-  timing_.solve += clock.elapsed();
-  solved_ = solved_once_ = true;
-  chi_changed_ = false;
-  solved_chi_ = chi_;
-  return solution_;
+  recover_bubbles(z, chi);
+  solution_.exact_on = nullptr;
 }
 
 // Assembles K (incrementally), factorises all of it, solves.
@@ -274,31 +295,58 @@ Eigen::VectorXd PenalisedStokes::solve_whole() {
 }
 
 // Through RegionSchurSolver: the far field was factorised when the near region was
-// chosen; per χ only the near region is. An empty vector: the region would be most
-// of D, solve whole.
-Eigen::VectorXd PenalisedStokes::solve_substructured() {
+// chosen; per χ only the near region is, and the fields are updated there (the
+// expansion to the far field is left to complete()). False: the region would be
+// most of D, solve whole.
+bool PenalisedStokes::solve_substructured() {
   if (!region_ || !near_region_covers_chi()) {
     build_near_region();
-    if (!region_) return {};
+    if (!region_) return false;
   }
   const RegionSchurTiming before = region_->timing();
-  const Stopwatch clock;
-  Eigen::VectorXd x = region_->solve([this](int t) { return element_system(t); });
+  Stopwatch clock;
+  const Eigen::VectorXd& x_near = region_->solve_near([this](int t) { return element_system(t); });
   const double total = clock.elapsed();
   const RegionSchurTiming& after = region_->timing();
   const double assembly = after.near_assembly - before.near_assembly;
   const double factorization = after.near_factorization - before.near_factorization;
   timing_.assembly += assembly;
   timing_.factorization += factorization;
-  timing_.expansion += after.expansion - before.expansion;
-  timing_.solve += total - assembly - factorization;
   ++timing_.factorizations;
-  return x;
+
+  clock = Stopwatch{};
+  solved_ = false;  // until the new solution is stored
+  const int nv = mesh_.num_vertices();
+  if (solution_.v1.size() != nv) {  // nothing yet: the prescribed values, zero elsewhere
+    solution_.v1 = z_fixed_.segment(0, nv);
+    solution_.v2 = z_fixed_.segment(nv, nv);
+    solution_.p = z_fixed_.segment(2 * nv, nv);
+    solution_.bubble = Eigen::Matrix2Xd::Zero(2, mesh_.num_triangles());
+  }
+  const std::vector<int>& dofs = region_->near_dofs();
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    const int d = free_[dofs[k]];
+    Eigen::VectorXd& field = d < nv ? solution_.v1 : d < 2 * nv ? solution_.v2 : solution_.p;
+    field[d % nv] = x_near[static_cast<Eigen::Index>(k)];
+  }
+  Eigen::VectorXd z(3 * nv);
+  z << solution_.v1, solution_.v2, solution_.p;
+  for (int t : region_->near_triangles()) recover_bubble(t, z, chi_[t]);
+  solution_.exact_on = &region_->near_mask();
+  pending_expansion_ = true;
+  timing_.solve += total - assembly - factorization + clock.elapsed();
+  return true;
 }
 
+// χ's support and the triangles around it (sharing a vertex with it) inside the near
+// region: the structure's vertices, where the coupling samples the fields, lie in
+// those triangles, so a near-only solution serves it.
 bool PenalisedStokes::near_region_covers_chi() const {
+  const std::vector<char>& interior = region_interior_vertex_;
   for (int t = 0; t < mesh_.num_triangles(); ++t)
-    if (chi_[t] != 0 && !region_->is_near(t)) return false;
+    if (chi_[t] != 0)
+      for (int v : mesh_.triangles[t])
+        if (!interior[v]) return false;
   return true;
 }
 
@@ -307,6 +355,7 @@ bool PenalisedStokes::near_region_covers_chi() const {
 // doubled whenever χ leaves the region, so that a structure moving across D costs
 // a few far-field factorisations, not one per iteration.
 void PenalisedStokes::build_near_region() {
+  if (pending_expansion_) complete();  // the last solution needs the old region
   region_.reset();
   const Stopwatch clock;
   Point lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
@@ -335,6 +384,10 @@ void PenalisedStokes::build_near_region() {
     region_too_large_ = true;
     return;
   }
+  region_interior_vertex_.assign(mesh_.num_vertices(), 1);  // all its triangles near
+  for (int t = 0; t < nt; ++t)
+    if (!near[t])
+      for (int v : mesh_.triangles[t]) region_interior_vertex_[v] = 0;
   region_ = std::make_unique<RegionSchurSolver>(
       unknowns(), near, [this](int t) { return element_dofs(t); },
       [this](int t) { return element_system(t); }, traction_load_, dof_rank(), solver_->name());
@@ -392,15 +445,19 @@ ElementSystem PenalisedStokes::element_system(int t) const {
   return e;
 }
 
-void PenalisedStokes::recover_bubbles(const Eigen::VectorXd& z) {
-  const int nv = mesh_.num_vertices();
+void PenalisedStokes::recover_bubbles(const Eigen::VectorXd& z, const Eigen::VectorXd& chi) {
   solution_.bubble.resize(2, mesh_.num_triangles());
-  for (int t = 0; t < mesh_.num_triangles(); ++t) {
-    const BubbleBlock bb = bubble_block(geometry_[t], mu_, chi_[t] / eps_);
-    Vector9d local;
-    for (int k = 0; k < 9; ++k) local[k] = z[fluid_dof(mesh_.triangles[t], k, nv)];
-    solution_.bubble.col(t) = bb.A_bb_inv * (loads_[t].F_b - bb.E * local);
-  }
+  for (int t = 0; t < mesh_.num_triangles(); ++t) recover_bubble(t, z, chi[t]);
+}
+
+// The bubble coefficients of triangle t from the vertex values z (all 3nv dofs) and
+// the χ the solution was computed with.
+void PenalisedStokes::recover_bubble(int t, const Eigen::VectorXd& z, double chi) {
+  const int nv = mesh_.num_vertices();
+  const BubbleBlock bb = bubble_block(geometry_[t], mu_, chi / eps_);
+  Vector9d local;
+  for (int k = 0; k < 9; ++k) local[k] = z[fluid_dof(mesh_.triangles[t], k, nv)];
+  solution_.bubble.col(t) = bb.A_bb_inv * (loads_[t].F_b - bb.E * local);
 }
 
 }  // namespace fsi

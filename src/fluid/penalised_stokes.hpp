@@ -32,6 +32,10 @@ struct FluidBoundaryConditions {
 struct FluidSolution {
   Eigen::VectorXd v1, v2, p;
   Eigen::Matrix2Xd bubble;
+  // Null: the fields are the solution everywhere. Otherwise only on the triangles t
+  // with (*exact_on)[t] (a near-only solve, PenalisedStokes::solve(true)); FluidField
+  // refuses to evaluate elsewhere (FieldNotComputed).
+  const std::vector<char>* exact_on = nullptr;
 };
 
 struct FluidTiming {
@@ -66,8 +70,12 @@ class PenalisedStokes {
   void reset();
   const Eigen::VectorXd& chi() const { return chi_; }
   // Solves for the current χ; if χ did not change since the last solve, returns
-  // the previous solution without refactorising.
-  const FluidSolution& solve();
+  // the previous solution without refactorising. near_only: with the substructured
+  // factorisation, the fields may be left exact only on the near region (the far
+  // field's expansion deferred until complete() or a solve() that needs it).
+  const FluidSolution& solve(bool near_only = false);
+  // The last solution made exact everywhere (the deferred expansion, if any).
+  const FluidSolution& complete();
 
   // The last successful solution and the χ it was computed with (after a failed
   // solve: the one before). Empty before the first success.
@@ -97,11 +105,13 @@ class PenalisedStokes {
   ElementSystem element_system(int t) const;
   std::array<int, 9> element_dofs(int t) const;
   Eigen::VectorXd solve_whole();
-  Eigen::VectorXd solve_substructured();
+  bool solve_substructured();
   bool near_region_covers_chi() const;
   const std::vector<int>& dof_rank();
   void build_near_region();
-  void recover_bubbles(const Eigen::VectorXd& z);
+  void recover_bubbles(const Eigen::VectorXd& z, const Eigen::VectorXd& chi);
+  void recover_bubble(int t, const Eigen::VectorXd& z, double chi);
+  void store(const Eigen::VectorXd& x, const Eigen::VectorXd& chi);
 
   const Mesh& mesh_;
   double mu_, eps_;
@@ -117,7 +127,9 @@ class PenalisedStokes {
   FluidFactorization factorization_ = FluidFactorization::whole;
   std::unique_ptr<RegionSchurSolver> region_;
   double region_margin_ = 0;           // the near region: χ's support's box grown by this
+  std::vector<char> region_interior_vertex_;  // vertices whose triangles are all near
   bool region_too_large_ = false;      // the near region would be most of D: solve whole
+  bool pending_expansion_ = false;     // solution_ is exact on the near region only
   Eigen::VectorXd traction_load_;      // ∫ h·w on the reduced dofs
   Eigen::SparseMatrix<double> K_;
   Eigen::VectorXd rhs_;

@@ -110,6 +110,10 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   b_far_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(far_dofs_.size()));
   for (int t : far_triangles) add_element(K_far_, b_far_, element(t), local);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) b_far_[static_cast<Eigen::Index>(k)] += load[far_dofs_[k]];
+  // Only the lower triangle is kept: MUMPS reads it in place, and the residual check
+  // multiplies by its symmetric view (half the memory of the largest matrix).
+  K_far_ = SparseMatrix(K_far_.triangularView<Eigen::Lower>());
+  K_far_.makeCompressed();
   std::vector<int> order;  // the far unknowns by their rank in the given order
   if (!rank.empty()) {
     order.resize(far_dofs_.size());
@@ -142,8 +146,9 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   timing_.far_factorization = clock.elapsed();
 }
 
-Eigen::VectorXd RegionSchurSolver::solve(const ElementFunction& element) {
+const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& element) {
   const int ng = static_cast<int>(gamma_.size());
+  solved_near_ = false;
   std::vector<int> local(n_, -1);
   for (std::size_t k = 0; k < near_dofs_.size(); ++k) local[near_dofs_[k]] = static_cast<int>(k);
 
@@ -153,9 +158,9 @@ Eigen::VectorXd RegionSchurSolver::solve(const ElementFunction& element) {
   const Eigen::MatrixXd& S = far_.schur();
   for (int j = 0; j < ng; ++j)
     std::copy(S.col(j).data(), S.col(j).data() + ng, M_.valuePtr() + M_.outerIndexPtr()[j]);
-  Eigen::VectorXd b_near = load_near_;
-  for (int t : near_triangles_) add_element(M_, b_near, element(t), local);
-  Eigen::VectorXd rhs = b_near;
+  b_near_ = load_near_;
+  for (int t : near_triangles_) add_element(M_, b_near_, element(t), local);
+  Eigen::VectorXd rhs = b_near_;
   rhs.head(ng) += y_gamma_;
   timing_.near_assembly += clock.elapsed();
 
@@ -164,30 +169,41 @@ Eigen::VectorXd RegionSchurSolver::solve(const ElementFunction& element) {
   timing_.near_factorization += clock.elapsed();
   ++timing_.near_factorizations;
   clock = Stopwatch{};
-  const Eigen::VectorXd x_near = near_solver_->solve(rhs);
+  x_near_ = near_solver_->solve(rhs);
+  if (!x_near_.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
+  const double residual = (M_ * x_near_ - rhs).norm(), scale = rhs.norm();
   timing_.near_solve += clock.elapsed();
-  if (!x_near.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
+  if (!(residual <= 1e-8 * scale))
+    throw SolverFailure("the Stokes matrix is singular or too ill-conditioned near the structure: relative "
+                        "residual " + std::to_string(residual / scale) + " after the direct solve");
+  solved_near_ = true;
+  return x_near_;
+}
 
-  clock = Stopwatch{};
-  const Eigen::VectorXd x_far = far_.expand(x_near.head(ng));
-  timing_.expansion += clock.elapsed();
+Eigen::VectorXd RegionSchurSolver::expand() {
+  if (!solved_near_) throw std::logic_error("RegionSchurSolver: expand() without a solve_near()");
+  const int ng = static_cast<int>(gamma_.size());
+  Stopwatch clock;
+  const Eigen::VectorXd x_far = far_.expand(x_near_.head(ng));
 
   // The residual of the whole system, K x − b = far part + near part (without S):
   // one product with each matrix, which catches a nearly singular system.
+  const Eigen::MatrixXd& S = far_.schur();
   Eigen::VectorXd x(n_), r = Eigen::VectorXd::Zero(n_), b = Eigen::VectorXd::Zero(n_);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) x[far_dofs_[k]] = x_far[static_cast<Eigen::Index>(k)];
-  for (std::size_t k = ng; k < near_dofs_.size(); ++k) x[near_dofs_[k]] = x_near[static_cast<Eigen::Index>(k)];
-  const Eigen::VectorXd r_far = K_far_ * x_far - b_far_;
-  Eigen::VectorXd r_near = M_ * x_near - b_near;
-  r_near.head(ng) -= S * x_near.head(ng);
+  for (std::size_t k = ng; k < near_dofs_.size(); ++k) x[near_dofs_[k]] = x_near_[static_cast<Eigen::Index>(k)];
+  const Eigen::VectorXd r_far = K_far_.selfadjointView<Eigen::Lower>() * x_far - b_far_;
+  Eigen::VectorXd r_near = M_ * x_near_ - b_near_;
+  r_near.head(ng) -= S * x_near_.head(ng);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) {
     r[far_dofs_[k]] += r_far[static_cast<Eigen::Index>(k)];
     b[far_dofs_[k]] += b_far_[static_cast<Eigen::Index>(k)];
   }
   for (std::size_t k = 0; k < near_dofs_.size(); ++k) {
     r[near_dofs_[k]] += r_near[static_cast<Eigen::Index>(k)];
-    b[near_dofs_[k]] += b_near[static_cast<Eigen::Index>(k)];
+    b[near_dofs_[k]] += b_near_[static_cast<Eigen::Index>(k)];
   }
+  timing_.expansion += clock.elapsed();
   const double residual = r.norm(), scale = b.norm();
   if (!(residual <= 1e-8 * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned: relative residual " +

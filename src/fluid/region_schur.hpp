@@ -58,7 +58,20 @@ class RegionSchurSolver {
   // x with K x = b, the near triangles assembled with element(t) now. Throws
   // SolverFailure if a factorisation fails or the residual ‖Kx − b‖ exceeds
   // 1e-8 ‖b‖ (a nearly singular system).
-  Eigen::VectorXd solve(const ElementFunction& element);
+  Eigen::VectorXd solve(const ElementFunction& element) {
+    solve_near(element);
+    return expand();
+  }
+  // The same in two steps. solve_near: x on the near unknowns only (x_near[k] is
+  // unknown near_dofs()[k]), the expansion to the far field deferred; checks the
+  // near system's residual. expand: the whole x for the last solve_near, with the
+  // whole system's residual check. A coupling step needs the fields only where the
+  // structure is, so it can skip the expansion (a solve with the far factors).
+  const Eigen::VectorXd& solve_near(const ElementFunction& element);
+  Eigen::VectorXd expand();
+  const std::vector<int>& near_dofs() const { return near_dofs_; }
+  const std::vector<int>& near_triangles() const { return near_triangles_; }
+  const std::vector<char>& near_mask() const { return near_; }
 
   bool is_near(int t) const { return near_[t] != 0; }
   int far_unknowns() const { return static_cast<int>(far_dofs_.size()); }
@@ -74,6 +87,8 @@ class RegionSchurSolver {
   std::vector<int> gamma_;      // Γ's far-local indices, in the order of the near-local 0..|Γ|−1
   Eigen::SparseMatrix<double> K_far_, M_;
   Eigen::VectorXd b_far_, load_near_, y_gamma_;
+  Eigen::VectorXd x_near_, b_near_;  // of the last solve_near
+  bool solved_near_ = false;
   MumpsSchur far_;
   std::unique_ptr<SparseDirectSolver> near_solver_;
   RegionSchurTiming timing_;

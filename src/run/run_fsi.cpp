@@ -142,7 +142,8 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   const Eigen::VectorXd& u = result.structure.u;
   const Eigen::VectorXd u1 = component(u, 0), u2 = component(u, 1);
   const Mesh deformed = displaced(ref, u1, u2);
-  const bool has_fluid = f.stokes->has_solution();
+  // (A near-only solution, whose far-field expansion failed, is not used.)
+  const bool has_fluid = f.stokes->has_solution() && f.stokes->last_solution().exact_on == nullptr;
   const FluidSolution& fluid = f.stokes->last_solution();
   const Eigen::VectorXd& chi = f.stokes->last_solution_chi();
   const FluidField field(*f.locator, fluid);
