@@ -4,7 +4,9 @@
 // it (a new region) and a new ε; a χ covering most of D falls back to the whole solve.
 #include <gtest/gtest.h>
 
+#include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
+#include "mesh/point_locator.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi {
@@ -66,6 +68,48 @@ TEST(RegionSchur, GivesTheWholeSolveThroughChiChangesARegionChangeAndANewEps) {
   ASSERT_NE(schur.region(), nullptr);
   EXPECT_GT(schur.region()->interface_unknowns(), 0);
   EXPECT_LT(schur.region()->near_unknowns(), schur.unknowns() / 2);
+}
+
+// A near-only solve: exact on the near region (bubbles included), refused elsewhere
+// by FluidField; complete() gives the whole solution; a new region completes first.
+TEST(RegionSchur, NearOnlySolvesAreExactNearTheStructureAndCompleteOnDemand) {
+  const Box box;
+  PenalisedStokes whole = box.stokes(1e-5, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-5, FluidFactorization::schur);
+  const Eigen::VectorXd chi = box.block(0.30, 0.40, 0.30, 0.15);
+  whole.set_chi(chi), schur.set_chi(chi);
+  const FluidSolution& a = whole.solve();
+  const FluidSolution& b = schur.solve(/*near_only=*/true);
+  ASSERT_NE(b.exact_on, nullptr);
+  const PointLocator locator(box.mesh);
+  const FluidField fa(locator, a), fb(locator, b);
+  int near = 0, far = 0;
+  for (int t = 0; t < box.mesh.num_triangles(); ++t) {
+    const Location centre{t, Eigen::Vector3d::Constant(1.0 / 3)};
+    if ((*b.exact_on)[t]) {
+      ++near;
+      EXPECT_LT((fa.at(centre).v - fb.at(centre).v).norm(), 1e-10 * (1 + fa.at(centre).v.norm())) << t;
+      EXPECT_NEAR(fa.at(centre).p, fb.at(centre).p, 1e-10 * (1 + std::abs(fa.at(centre).p))) << t;
+    } else {
+      ++far;
+      EXPECT_THROW(fb.at(centre), FieldNotComputed) << t;
+    }
+  }
+  EXPECT_GT(near, 0);
+  EXPECT_GT(far, 0);
+  EXPECT_EQ(schur.timing().factorizations, 1);
+  const FluidSolution& c = schur.complete();
+  EXPECT_EQ(c.exact_on, nullptr);
+  EXPECT_LT(relative_difference(a, c), 1e-10);
+  EXPECT_EQ(schur.timing().factorizations, 1);  // completing refactorises nothing
+
+  // Near-only again, then χ moves out of the region: the new region's set-up first
+  // completes the previous solution; the result is still the whole solve's.
+  const Eigen::VectorXd moved = box.block(0.05, 0.75, 0.20, 0.15);
+  whole.set_chi(moved), schur.set_chi(moved);
+  schur.solve(true);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_EQ(schur.timing().regions, 2);
 }
 
 TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
