@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: demo test build deps clean fuzz-build fuzz-smoke fuzz test-sanitize
+.PHONY: demo test build deps clean fuzz-build fuzz-smoke fuzz test-sanitize bench-compare
 
 deps:
 	@scripts/install-deps.sh
@@ -46,6 +46,16 @@ test-sanitize: deps
 	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
+
+# FreeFem++ (the same algorithm, bench/freefem/) against fsicontact on Table 1's rows, run
+# interleaved; prints iterations, times, memory and speed-ups (bench/compare_freefem.sh;
+# all 19 rows take ~20 minutes). Options pass through, e.g.
+#   make bench-compare COMPARE_ARGS="--rows 1,2 --out /tmp/compare"
+COMPARE_ARGS ?=
+bench-compare:
+	@scripts/install-deps.sh --with-freefem
+	@$(MAKE) --no-print-directory build
+	@FSICONTACT=$(BUILD)/app/fsicontact bench/compare_freefem.sh $(COMPARE_ARGS)
 
 clean:
 	rm -rf $(BUILD) build-fuzz build-sanitize out
