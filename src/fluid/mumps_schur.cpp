@@ -1,52 +1,28 @@
 #include "fluid/mumps_schur.hpp"
 
-#include <dmumps_c.h>
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 #include "common/errors.hpp"
+#include "fluid/mumps_handle.hpp"
 #include "fluid/sparse_solver.hpp"
 
 namespace fsi {
 
 struct MumpsSchur::Mumps {
-  DMUMPS_STRUC_C id{};
+  MumpsHandle handle{"MUMPS (Schur complement) "};
   std::vector<MUMPS_INT> rows, columns, position, listvar;
   std::vector<double> values, schur, redrhs;
-  bool initialised = false;
 
-  MUMPS_INT& icntl(int i) { return id.icntl[i - 1]; }  // 1-based, as in the MUMPS guide
-  void call(int job, const char* phase) {
-    id.job = job;
-    dmumps_c(&id);
-    check(phase);
-  }
-  void check(const char* phase) const {
-    if (id.info[0] < 0)
-      throw SolverFailure(std::string("MUMPS (Schur complement) ") + phase + " failed, INFO(1) = " +
-                          std::to_string(id.info[0]) + ", INFO(2) = " + std::to_string(id.info[1]));
-  }
+  DMUMPS_STRUC_C& id() { return handle.id(); }
+  MUMPS_INT& icntl(int i) { return handle.icntl(i); }
+  void call(int job, const char* phase) { handle.call(job, phase); }
 };
 
-MumpsSchur::MumpsSchur() : m_(std::make_unique<Mumps>()) {
-  m_->id.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
-  m_->id.par = 1;
-  m_->id.sym = 2;  // symmetric indefinite: LDLᵀ with 1×1/2×2 pivoting
-  m_->call(-1, "initialisation");
-  m_->initialised = true;
-  m_->icntl(1) = m_->icntl(2) = m_->icntl(3) = -1;  // no output
-  m_->icntl(4) = 0;
-  m_->icntl(28) = 1;  // sequential analysis
-}
+MumpsSchur::MumpsSchur() : m_(std::make_unique<Mumps>()) {}
 
-MumpsSchur::~MumpsSchur() {
-  if (m_ && m_->initialised) {
-    m_->id.job = -2;
-    dmumps_c(&m_->id);
-  }
-}
+MumpsSchur::~MumpsSchur() = default;
 
 void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vector<int>& gamma,
                            const std::vector<int>& order) {
@@ -92,7 +68,7 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
   for (int k = 0; k < ns; ++k) m.listvar[k] = gamma[k] + 1;
   m.schur.assign(static_cast<std::size_t>(ns) * ns, 0.0);
 
-  DMUMPS_STRUC_C& id = m.id;
+  DMUMPS_STRUC_C& id = m.id();
   id.n = n;
   id.nnz = static_cast<MUMPS_INT8>(m.rows.size());
   id.irn = m.rows.data();
@@ -105,20 +81,10 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
   id.listvar_schur = m.listvar.data();
   id.schur = m.schur.data();
   m.call(1, "analysis");
-  // Pivoting can delay pivots past the workspace the analysis estimated: grow it.
-  for (int attempt = 0;; ++attempt) {
-    id.job = 2;
-    dmumps_c(&id);
-    const int status = id.info[0];
-    const bool workspace = status == -8 || status == -9 || status == -14 || status == -15 ||
-                           status == -17 || status == -20;
-    if (!workspace || attempt == 4) break;
-    m.icntl(14) = std::max(2 * m.icntl(14), 40);
-  }
-  if (id.info[0] == -10)
+  if (m.handle.factorize_numeric() == -10)
     throw SolverFailure("MUMPS could not factorise the fluid far from the structure: it is singular "
                         "(INFO(1) = -10); check the Dirichlet boundary");
-  m.check("factorisation");
+  m.handle.check("factorisation");
   // The solution phase does not read A (no iterative refinement, no error analysis):
   // its coordinate copy goes (20–40 MB at hF = 0.0025).
   m.rows = {}, m.columns = {}, m.values = {};
@@ -135,15 +101,15 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
 Eigen::VectorXd MumpsSchur::condense(const Eigen::VectorXd& b) {
   Mumps& m = *m_;
   if (S_.size() == 0) throw std::logic_error("MumpsSchur: condense() before factorize()");
-  if (b.size() != m.id.n) throw std::invalid_argument("MumpsSchur: right-hand side of the wrong size");
+  if (b.size() != m.id().n) throw std::invalid_argument("MumpsSchur: right-hand side of the wrong size");
   b_ = b;
   Eigen::VectorXd work = b;
   m.redrhs.assign(S_.rows(), 0.0);
-  m.id.rhs = work.data();
-  m.id.nrhs = 1;
-  m.id.lrhs = m.id.n;
-  m.id.redrhs = m.redrhs.data();
-  m.id.lredrhs = static_cast<MUMPS_INT>(S_.rows());
+  m.id().rhs = work.data();
+  m.id().nrhs = 1;
+  m.id().lrhs = m.id().n;
+  m.id().redrhs = m.redrhs.data();
+  m.id().lredrhs = static_cast<MUMPS_INT>(S_.rows());
   m.icntl(26) = 1;  // forward elimination only, the reduced right-hand side in REDRHS
   m.call(3, "condensation");
   m.icntl(26) = 0;
@@ -160,11 +126,11 @@ Eigen::VectorXd MumpsSchur::expand(const Eigen::VectorXd& x_gamma) {
   if (expanded_) condense(Eigen::VectorXd(b_));
   Eigen::VectorXd x = b_;
   std::copy(x_gamma.data(), x_gamma.data() + x_gamma.size(), m.redrhs.begin());
-  m.id.rhs = x.data();
-  m.id.nrhs = 1;
-  m.id.lrhs = m.id.n;
-  m.id.redrhs = m.redrhs.data();
-  m.id.lredrhs = static_cast<MUMPS_INT>(S_.rows());
+  m.id().rhs = x.data();
+  m.id().nrhs = 1;
+  m.id().lrhs = m.id().n;
+  m.id().redrhs = m.redrhs.data();
+  m.id().lredrhs = static_cast<MUMPS_INT>(S_.rows());
   m.icntl(26) = 2;  // backward substitution from x_Γ given in REDRHS
   m.call(3, "expansion");
   m.icntl(26) = 0;
@@ -172,7 +138,7 @@ Eigen::VectorXd MumpsSchur::expand(const Eigen::VectorXd& x_gamma) {
   return x;
 }
 
-double MumpsSchur::factor_entries() const { return static_cast<double>(m_->id.infog[28]); }
-double MumpsSchur::factor_flops() const { return m_->id.rinfog[2]; }
+double MumpsSchur::factor_entries() const { return static_cast<double>(m_->id().infog[28]); }
+double MumpsSchur::factor_flops() const { return m_->id().rinfog[2]; }
 
 }  // namespace fsi

@@ -123,9 +123,9 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   far_.factorize(K_far_, gamma_, order);
   y_gamma_ = far_.condense(b_far_);
 
-  std::fill(local.begin(), local.end(), -1);
-  for (std::size_t k = 0; k < near_dofs_.size(); ++k) local[near_dofs_[k]] = static_cast<int>(k);
-  M_ = element_pattern(static_cast<int>(near_dofs_.size()), near_triangles_, local, dofs, ng);
+  near_local_.assign(n, -1);
+  for (std::size_t k = 0; k < near_dofs_.size(); ++k) near_local_[near_dofs_[k]] = static_cast<int>(k);
+  M_ = element_pattern(static_cast<int>(near_dofs_.size()), near_triangles_, near_local_, dofs, ng);
   load_near_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(near_dofs_.size()));
   for (std::size_t k = ng; k < near_dofs_.size(); ++k)  // Γ's load went to the far field
     load_near_[static_cast<Eigen::Index>(k)] = load[near_dofs_[k]];
@@ -149,8 +149,6 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
 const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& element) {
   const int ng = static_cast<int>(gamma_.size());
   solved_near_ = false;
-  std::vector<int> local(n_, -1);
-  for (std::size_t k = 0; k < near_dofs_.size(); ++k) local[near_dofs_[k]] = static_cast<int>(k);
 
   Stopwatch clock;
   // M = [S 0; 0 0] + the near elements; Γ's columns start with the dense block.
@@ -159,7 +157,7 @@ const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& elem
   for (int j = 0; j < ng; ++j)
     std::copy(S.col(j).data(), S.col(j).data() + ng, M_.valuePtr() + M_.outerIndexPtr()[j]);
   b_near_ = load_near_;
-  for (int t : near_triangles_) add_element(M_, b_near_, element(t), local);
+  for (int t : near_triangles_) add_element(M_, b_near_, element(t), near_local_);
   Eigen::VectorXd rhs = b_near_;
   rhs.head(ng) += y_gamma_;
   timing_.near_assembly += clock.elapsed();

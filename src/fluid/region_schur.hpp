@@ -84,6 +84,7 @@ class RegionSchurSolver {
   std::vector<int> near_triangles_;
   std::vector<int> far_dofs_;   // far local → reduced (F then Γ)
   std::vector<int> near_dofs_;  // near local → reduced (Γ then I)
+  std::vector<int> near_local_;  // reduced → near local, −1 if far only
   std::vector<int> gamma_;      // Γ's far-local indices, in the order of the near-local 0..|Γ|−1
   Eigen::SparseMatrix<double> K_far_, M_;
   Eigen::VectorXd b_far_, load_near_, y_gamma_;

@@ -1,6 +1,5 @@
 #include "fluid/sparse_solver.hpp"
 
-#include <dmumps_c.h>
 #include <umfpack.h>
 
 #include <Eigen/CholmodSupport>
@@ -11,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "fluid/mumps_handle.hpp"
 
 namespace fsi {
 
@@ -191,23 +191,12 @@ namespace {
 class MumpsSolver final : public SparseDirectSolver {
  public:
   enum class Ordering { metis, pord, amd, given };
-  MumpsSolver(std::string name, Ordering ordering) : name_(std::move(name)), ordering_(ordering) {
-    id_.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
-    id_.par = 1;
-    id_.sym = 2;
-    call(-1, "initialisation");
-    icntl(1) = icntl(2) = icntl(3) = -1;  // no output
-    icntl(4) = 0;
+  // Ordering::given: `order` lists the unknowns in elimination order.
+  MumpsSolver(std::string name, Ordering ordering, std::vector<int> order = {})
+      : name_(std::move(name)), ordering_(ordering), order_(std::move(order)), mumps_(name_ + ": MUMPS ") {
     icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
-    icntl(28) = 1;  // sequential analysis
     icntl(7) = ordering == Ordering::metis || ordering == Ordering::given ? 1 : ordering == Ordering::pord ? 4 : 0;
   }
-  ~MumpsSolver() override {
-    id_.job = -2;
-    dmumps_c(&id_);
-  }
-  MumpsSolver(const MumpsSolver&) = delete;
-  MumpsSolver& operator=(const MumpsSolver&) = delete;
   std::string name() const override { return name_; }
   FactorStatistics statistics() const override {
     return {static_cast<double>(id_.infog[28]), id_.rinfog[2]};  // INFOG(29), RINFOG(3)
@@ -241,18 +230,8 @@ class MumpsSolver final : public SparseDirectSolver {
 
   void factorize_values(const SparseMatrix& A) override {
     gather(A);
-    // Pivoting can delay pivots past the workspace the analysis estimated: grow it.
-    for (int attempt = 0;; ++attempt) {
-      id_.job = 2;
-      dmumps_c(&id_);
-      const int status = id_.info[0];
-      const bool workspace = status == -8 || status == -9 || status == -14 || status == -15 ||
-                             status == -17 || status == -20;
-      if (!workspace || attempt == 4) break;
-      icntl(14) = std::max(2 * icntl(14), 40);
-    }
-    if (id_.info[0] == -10) singular(name_, "MUMPS INFO(1) = -10");
-    check("factorisation");
+    if (mumps_.factorize_numeric() == -10) singular(name_, "MUMPS INFO(1) = -10");
+    mumps_.check("factorisation");
   }
 
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override {
@@ -263,32 +242,18 @@ class MumpsSolver final : public SparseDirectSolver {
   }
 
  private:
-  MUMPS_INT& icntl(int i) { return id_.icntl[i - 1]; }  // 1-based, as in the MUMPS guide
+  MUMPS_INT& icntl(int i) { return mumps_.icntl(i); }
+  void call(int job, const char* phase) { mumps_.call(job, phase); }
   void gather(const SparseMatrix& A) {
     values_.resize(slots_.size());
     for (std::size_t k = 0; k < slots_.size(); ++k) values_[k] = A.valuePtr()[slots_[k]];
     id_.a = values_.data();
   }
-  void call(int job, const char* phase) {
-    id_.job = job;
-    dmumps_c(&id_);
-    check(phase);
-  }
-  void check(const char* phase) const {
-    if (id_.info[0] < 0)
-      throw SolverFailure(name_ + ": MUMPS " + phase +
-                          " failed, INFO(1) = " + std::to_string(id_.info[0]) +
-                          ", INFO(2) = " + std::to_string(id_.info[1]));
-  }
-
   std::string name_;
   Ordering ordering_;
-
- public:
   std::vector<int> order_;  // Ordering::given: the unknowns in elimination order
-
- private:
-  DMUMPS_STRUC_C id_{};
+  MumpsHandle mumps_;
+  DMUMPS_STRUC_C& id_ = mumps_.id();
   std::vector<MUMPS_INT> rows_, columns_, position_;
   std::vector<int> slots_;  // lower-triangle entry k is A.valuePtr()[slots_[k]]
   std::vector<double> values_;
@@ -322,9 +287,7 @@ const std::vector<std::string>& sparse_solver_names() {
 }
 
 std::unique_ptr<SparseDirectSolver> make_mumps_solver(std::vector<int> order) {
-  auto solver = std::make_unique<MumpsSolver>("mumps-given-order", MumpsSolver::Ordering::given);
-  solver->order_ = std::move(order);
-  return solver;
+  return std::make_unique<MumpsSolver>("mumps-given-order", MumpsSolver::Ordering::given, std::move(order));
 }
 
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) {

@@ -1,0 +1,40 @@
+// One sequential MUMPS instance for a symmetric indefinite matrix (SYM = 2: LDLᵀ with
+// threshold 1×1/2×2 pivoting): its set-up and release, the calls and their errors,
+// and the numeric factorisation that grows the workspace when pivoting needs more.
+// Shared by MumpsSolver (src/fluid/sparse_solver.cpp) and MumpsSchur.
+#pragma once
+
+#include <dmumps_c.h>
+
+#include <string>
+
+namespace fsi {
+
+class MumpsHandle {
+ public:
+  // `who` starts every error message, e.g. "mumps-metis: MUMPS ".
+  explicit MumpsHandle(std::string who);
+  ~MumpsHandle();
+  MumpsHandle(const MumpsHandle&) = delete;
+  MumpsHandle& operator=(const MumpsHandle&) = delete;
+
+  DMUMPS_STRUC_C& id() { return id_; }
+  const DMUMPS_STRUC_C& id() const { return id_; }
+  MUMPS_INT& icntl(int i) { return id_.icntl[i - 1]; }  // 1-based, as in the MUMPS guide
+
+  // Runs job; SolverFailure if MUMPS reports an error.
+  void call(int job, const char* phase);
+  // SolverFailure if the last call reported an error.
+  void check(const char* phase) const;
+  // Job 2, retried with twice the workspace margin (ICNTL(14)) when pivoting delayed
+  // pivots past the analysis's estimate, up to 4 times. Returns INFO(1) unchecked,
+  // so that the caller can word the singular case (−10) for its matrix.
+  int factorize_numeric();
+
+ private:
+  std::string who_;
+  DMUMPS_STRUC_C id_{};
+  bool initialised_ = false;
+};
+
+}  // namespace fsi
