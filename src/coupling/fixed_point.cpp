@@ -45,7 +45,7 @@ CouplingResult FixedPointCoupling::run() {
   }
   // The outputs need the fields everywhere: the last fluid solve's deferred
   // expansion to the far field.
-  if (p_.fluid.has_solution()) {
+  if (complete_at_end && p_.fluid.has_solution()) {
     try {
       p_.fluid.complete();
     } catch (const SolverFailure& e) {

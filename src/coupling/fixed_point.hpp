@@ -64,6 +64,10 @@ class FixedPointCoupling {
 
   // One line per iteration (for stderr).
   std::function<void(const std::string&)> progress;
+  // Whether run() ends by expanding the last fluid solution to the far field
+  // (PenalisedStokes::complete()): the outputs that draw or write the whole fluid
+  // need it; a run without them can leave it exact near the structure only.
+  bool complete_at_end = true;
 
   // Never throws for a failed solve: it stops, keeps the last good state and says
   // why in CouplingResult::failure (a solve failed or a field became non-finite).

@@ -38,15 +38,23 @@ class MumpsSchur {
   // of the last condense(). (MUMPS's forward elimination serves one expansion; a
   // second one redoes it.)
   Eigen::VectorXd expand(const Eigen::VectorXd& x_gamma);
-  // Entries of the factors of A_FF (MUMPS INFOG(29)) and the flops of the elimination.
-  double factor_entries() const;
-  double factor_flops() const;
+  // Frees the factors (MUMPS's whole instance) but keeps S: condense() and expand()
+  // need a new factorize() first. For a large far field, whose factors are needed
+  // only for the expansions, this lets a run hold S alone between them.
+  void release();
+  bool has_factors() const { return m_ != nullptr; }
+  // Entries of the factors of A_FF (MUMPS INFOG(29)), the flops of the elimination,
+  // and the memory MUMPS used for it (INFOG(22), MB), all of the last factorize().
+  double factor_entries() const { return entries_; }
+  double factor_flops() const { return flops_; }
+  double factor_memory_mb() const { return memory_mb_; }
 
  private:
   struct Mumps;
   std::unique_ptr<Mumps> m_;
   Eigen::MatrixXd S_;
   Eigen::VectorXd b_;
+  double entries_ = -1, flops_ = -1, memory_mb_ = -1;
   bool condensed_ = false, expanded_ = false;
 };
 

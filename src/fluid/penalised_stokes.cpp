@@ -149,7 +149,7 @@ void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
 
 void PenalisedStokes::set_eps(double eps) {
   if (eps != eps_) {
-    if (pending_expansion_) complete();  // its bubbles need the old ε
+    settle_pending_expansion();  // its bubbles need the old ε
     eps_ = eps;
     chi_changed_ = true;
   }
@@ -241,7 +241,9 @@ const FluidSolution& PenalisedStokes::solve(bool near_only) {
 const FluidSolution& PenalisedStokes::complete() {
   if (!pending_expansion_) return solution_;
   const Stopwatch clock;
+  const int refactorized = region_->timing().far_refactorizations;
   store(region_->expand(), solved_chi_);  // the χ of the last solve
+  timing_.far_refactorizations += region_->timing().far_refactorizations - refactorized;
   pending_expansion_ = false;
   const double elapsed = clock.elapsed();
   timing_.solve += elapsed;
@@ -355,7 +357,7 @@ bool PenalisedStokes::near_region_covers_chi() const {
 // doubled whenever χ leaves the region, so that a structure moving across D costs
 // a few far-field factorisations, not one per iteration.
 void PenalisedStokes::build_near_region() {
-  if (pending_expansion_) complete();  // the last solution needs the old region
+  settle_pending_expansion();  // the last solution needs the old region
   region_.reset();
   const Stopwatch clock;
   Point lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
@@ -390,12 +392,28 @@ void PenalisedStokes::build_near_region() {
       for (int v : mesh_.triangles[t]) region_interior_vertex_[v] = 0;
   region_ = std::make_unique<RegionSchurSolver>(
       unknowns(), near, [this](int t) { return element_dofs(t); },
-      [this](int t) { return element_system(t); }, traction_load_, dof_rank(), solver_->name());
+      [this](int t) { return element_system(t); }, traction_load_, dof_rank(), solver_->name(),
+      far_factor_budget_mb_);
   const double elapsed = clock.elapsed();
   timing_.factorization += elapsed;
   timing_.far_factorization += elapsed;
   ++timing_.regions;
   ++timing_.analyses;
+}
+
+// Before the last solution's region or ε changes: its deferred expansion, if the
+// far factors are at hand (one solve); otherwise (released: it would cost a far-field
+// factorisation, for a solution only a failure right after would need) it stays
+// exact on its near region only.
+void PenalisedStokes::settle_pending_expansion() {
+  if (!pending_expansion_) return;
+  if (region_->keeps_far_factors()) {
+    complete();
+  } else {
+    stale_mask_ = region_->near_mask();
+    solution_.exact_on = &stale_mask_;
+    pending_expansion_ = false;
+  }
 }
 
 // A fill-reducing order of the unknowns, computed once per mesh: METIS nested

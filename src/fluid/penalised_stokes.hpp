@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -46,6 +47,7 @@ struct FluidTiming {
   // near region, part of `factorization`) and the expansions (part of `solve`).
   double far_factorization = 0, expansion = 0;
   int regions = 0;
+  int far_refactorizations = 0;  // expansions that refactorised a released far field
 };
 
 // How solve() factorises: `schur` keeps the far field's factorisation and its Schur
@@ -64,6 +66,9 @@ class PenalisedStokes {
   void set_eps(double eps);
   void set_factorization(FluidFactorization f) { factorization_ = f; }
   FluidFactorization factorization() const { return factorization_; }
+  // Far fields whose factorisation needs more than this (MB, MUMPS's estimate) are
+  // not kept: each expansion refactorises them (RegionSchurSolver). INFINITY: keep all.
+  void set_far_factor_budget(double mb) { far_factor_budget_mb_ = mb; }
   // The substructured solver in use (null before the first substructured solve).
   const RegionSchurSolver* region() const { return region_.get(); }
   // Forget the last solution (the next solve() refactorises), e.g. for a new run.
@@ -74,7 +79,9 @@ class PenalisedStokes {
   // factorisation, the fields may be left exact only on the near region (the far
   // field's expansion deferred until complete() or a solve() that needs it).
   const FluidSolution& solve(bool near_only = false);
-  // The last solution made exact everywhere (the deferred expansion, if any).
+  // The last solution made exact everywhere (the deferred expansion, if any). One
+  // exception: if the solve after a change of near region fails, the solution before
+  // it stays exact near the structure only (FluidSolution::exact_on).
   const FluidSolution& complete();
 
   // The last successful solution and the χ it was computed with (after a failed
@@ -109,6 +116,7 @@ class PenalisedStokes {
   bool near_region_covers_chi() const;
   const std::vector<int>& dof_rank();
   void build_near_region();
+  void settle_pending_expansion();
   void recover_bubbles(const Eigen::VectorXd& z, const Eigen::VectorXd& chi);
   void recover_bubble(int t, const Eigen::VectorXd& z, double chi);
   void store(const Eigen::VectorXd& x, const Eigen::VectorXd& chi);
@@ -126,6 +134,11 @@ class PenalisedStokes {
   std::vector<int> dof_rank_;          // reduced dof → position in a METIS order (vertex graph)
   FluidFactorization factorization_ = FluidFactorization::whole;
   std::unique_ptr<RegionSchurSolver> region_;
+  // Where the last solution is exact when its region was replaced before it was
+  // completed (that region's far factors released: completing it would have cost a
+  // far-field factorisation, and only a failed solve right after would need it).
+  std::vector<char> stale_mask_;
+  double far_factor_budget_mb_ = INFINITY;
   double region_margin_ = 0;           // the near region: χ's support's box grown by this
   std::vector<char> region_interior_vertex_;  // vertices whose triangles are all near
   bool region_too_large_ = false;      // the near region would be most of D: solve whole

@@ -1,6 +1,9 @@
 #include "fluid/region_schur.hpp"
 
 #include <algorithm>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -71,12 +74,22 @@ void add_element(SparseMatrix& A, Eigen::VectorXd& b, const ElementSystem& e, co
   }
 }
 
+// The patterns' temporaries and a released factorisation leave the heap fragmented,
+// and MUMPS's workspace, one large block, cannot reuse those pages: give them back
+// before a far-field factorisation (row 9, hF = 0.0025: 10–80 MB of the peak).
+void release_free_heap() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
 }  // namespace
 
 RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const ElementDofs& dofs,
                                      const ElementFunction& element, const Eigen::VectorXd& load,
-                                     const std::vector<int>& rank, const std::string& near_solver)
-    : near_(near), n_(n) {
+                                     const std::vector<int>& rank, const std::string& near_solver,
+                                     double far_factor_budget_mb)
+    : near_(near), near_solver_name_(near_solver), n_(n) {
   const Stopwatch clock;
   const int nt = static_cast<int>(near.size());
   std::vector<int> far_triangles;
@@ -114,14 +127,21 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   // multiplies by its symmetric view (half the memory of the largest matrix).
   K_far_ = SparseMatrix(K_far_.triangularView<Eigen::Lower>());
   K_far_.makeCompressed();
-  std::vector<int> order;  // the far unknowns by their rank in the given order
-  if (!rank.empty()) {
-    order.resize(far_dofs_.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return rank[far_dofs_[a]] < rank[far_dofs_[b]]; });
+  if (!rank.empty()) {  // the far unknowns by their rank in the given order
+    far_order_.resize(far_dofs_.size());
+    for (std::size_t k = 0; k < far_order_.size(); ++k) far_order_[k] = static_cast<int>(k);
+    std::sort(far_order_.begin(), far_order_.end(),
+              [&](int a, int b) { return rank[far_dofs_[a]] < rank[far_dofs_[b]]; });
   }
-  far_.factorize(K_far_, gamma_, order);
+  release_free_heap();
+  far_.factorize(K_far_, gamma_, far_order_);
   y_gamma_ = far_.condense(b_far_);
+  timing_.far_factor_mb = far_.factor_memory_mb();
+  keep_far_ = !(far_.factor_memory_mb() > far_factor_budget_mb);
+  if (!keep_far_) {
+    far_.release();
+    release_free_heap();
+  }
 
   near_local_.assign(n, -1);
   for (std::size_t k = 0; k < near_dofs_.size(); ++k) near_local_[near_dofs_[k]] = static_cast<int>(k);
@@ -132,18 +152,20 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   // M's Γ block is dense: Γ must be eliminated last (as the root of the elimination
   // tree), or every Γ pivot fills I's rows. I in the given order, then Γ.
   if (!rank.empty() && near_solver.rfind("mumps", 0) == 0) {
-    std::vector<int> near_order(near_dofs_.size());
-    for (std::size_t k = 0; k < near_order.size(); ++k) near_order[k] = static_cast<int>(k);
-    std::sort(near_order.begin(), near_order.end(), [&](int a, int b) {
+    near_order_.resize(near_dofs_.size());
+    for (std::size_t k = 0; k < near_order_.size(); ++k) near_order_[k] = static_cast<int>(k);
+    std::sort(near_order_.begin(), near_order_.end(), [&](int a, int b) {
       if ((a < ng) != (b < ng)) return b < ng;  // I before Γ
       return rank[near_dofs_[a]] < rank[near_dofs_[b]];
     });
-    near_solver_ = make_mumps_solver(std::move(near_order));
-  } else {
-    near_solver_ = make_sparse_solver(near_solver);
   }
+  near_solver_ = make_near_solver();
   near_solver_->analyze(M_);
   timing_.far_factorization = clock.elapsed();
+}
+
+std::unique_ptr<SparseDirectSolver> RegionSchurSolver::make_near_solver() const {
+  return near_order_.empty() ? make_sparse_solver(near_solver_name_) : make_mumps_solver(near_order_);
 }
 
 const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& element) {
@@ -163,6 +185,10 @@ const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& elem
   timing_.near_assembly += clock.elapsed();
 
   clock = Stopwatch{};
+  if (!near_solver_) {  // released for an expansion
+    near_solver_ = make_near_solver();
+    near_solver_->analyze(M_);
+  }
   near_solver_->factorize(M_);
   timing_.near_factorization += clock.elapsed();
   ++timing_.near_factorizations;
@@ -182,7 +208,20 @@ Eigen::VectorXd RegionSchurSolver::expand() {
   if (!solved_near_) throw std::logic_error("RegionSchurSolver: expand() without a solve_near()");
   const int ng = static_cast<int>(gamma_.size());
   Stopwatch clock;
+  if (!far_.has_factors()) {
+    // The far factors were released: refactorise (the near factors go first, so
+    // that both are never held at once; the next solve_near() redoes them).
+    near_solver_.reset();
+    release_free_heap();
+    far_.factorize(K_far_, gamma_, far_order_);
+    far_.condense(b_far_);
+    ++timing_.far_refactorizations;
+  }
   const Eigen::VectorXd x_far = far_.expand(x_near_.head(ng));
+  if (!keep_far_) {
+    far_.release();
+    release_free_heap();
+  }
 
   // The residual of the whole system, K x − b = far part + near part (without S):
   // one product with each matrix, which catches a nearly singular system.

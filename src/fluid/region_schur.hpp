@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -41,6 +42,8 @@ struct RegionSchurTiming {
   double far_factorization = 0;  // once: analysis + partial factorisation + condensation
   double near_assembly = 0, near_factorization = 0, near_solve = 0, expansion = 0;
   int near_factorizations = 0;
+  int far_refactorizations = 0;  // for expansions, after the far factors were released
+  double far_factor_mb = 0;      // MUMPS's memory for the far field (INFOG(22))
 };
 
 class RegionSchurSolver {
@@ -50,10 +53,16 @@ class RegionSchurSolver {
   // position of unknown d in a fill-reducing order of all unknowns (empty: METIS on
   // the far field's matrix). Assembles and factorises the far field with element(t)
   // for the triangles not near.
+  // far_factor_budget_mb: if the far field's factorisation takes more memory than
+  // this (MUMPS's INFOG(22), MB), its factors are released once S and the condensed
+  // load are known, and each expansion refactorises it (after releasing the near
+  // factors): a fixed-point loop then holds S and the near factors only, and the
+  // largest run needs about half the memory for one more far-field factorisation.
   RegionSchurSolver(int n, const std::vector<char>& near, const ElementDofs& dofs,
                     const ElementFunction& element, const Eigen::VectorXd& load,
                     const std::vector<int>& rank = {},
-                    const std::string& near_solver = kDefaultSparseSolver);
+                    const std::string& near_solver = kDefaultSparseSolver,
+                    double far_factor_budget_mb = INFINITY);
 
   // x with K x = b, the near triangles assembled with element(t) now. Throws
   // SolverFailure if a factorisation fails or the residual ‖Kx − b‖ exceeds
@@ -78,14 +87,23 @@ class RegionSchurSolver {
   int interface_unknowns() const { return static_cast<int>(gamma_.size()); }
   int near_unknowns() const { return static_cast<int>(near_dofs_.size()); }
   const RegionSchurTiming& timing() const { return timing_; }
+  // Whether the far factors are kept between expansions (see the constructor).
+  bool keeps_far_factors() const { return keep_far_; }
+  // Frees the near factors (the next solve_near() analyses M again).
+  void release_near() { near_solver_.reset(); }
 
  private:
+  std::unique_ptr<SparseDirectSolver> make_near_solver() const;
+
   std::vector<char> near_;
   std::vector<int> near_triangles_;
   std::vector<int> far_dofs_;   // far local → reduced (F then Γ)
   std::vector<int> near_dofs_;  // near local → reduced (Γ then I)
   std::vector<int> near_local_;  // reduced → near local, −1 if far only
   std::vector<int> gamma_;      // Γ's far-local indices, in the order of the near-local 0..|Γ|−1
+  std::vector<int> far_order_, near_order_;  // fill-reducing orders (empty: the solver's own)
+  std::string near_solver_name_;
+  bool keep_far_ = true;
   Eigen::SparseMatrix<double> K_far_, M_;
   Eigen::VectorXd b_far_, load_near_, y_gamma_;
   Eigen::VectorXd x_near_, b_near_;  // of the last solve_near

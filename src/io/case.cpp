@@ -44,6 +44,7 @@ struct Range {
 };
 const Range kAny{};
 const Range kPositive{0, inf};
+const Range kNonNegative{0, inf, true, false};
 Range open(double a, double b) { return {a, b, false, false}; }
 Range left_open(double a, double b) { return {a, b, false, true}; }
 
@@ -283,6 +284,7 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     p.mesh = resolve_path(s.text("mesh", ""), case_path);
     p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
     p.factorization = s.choice("factorization", p.factorization, {"schur", "whole"});
+    p.keep_far_factors_mb = s.number("keep_far_factors_mb", p.keep_far_factors_mb, kNonNegative);
     s.reject_unknown();
     c.fluid = p;
   } else {
@@ -366,7 +368,8 @@ std::string to_toml(const Case& c) {
   if (c.fluid) {
     const auto& f = *c.fluid;
     toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},
-                   {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization}};
+                   {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
+                   {"keep_far_factors_mb", f.keep_far_factors_mb}};
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
     t.insert("fluid", ft);
   }

@@ -37,6 +37,10 @@ struct FluidParams {
   // "schur": the far field factorised once per run, only the region around the
   // structure per χ; "whole": all of K per χ (PenalisedStokes, FluidFactorization).
   std::string factorization = "schur";
+  // With "schur": far fields whose factorisation takes more memory than this (MB,
+  // MUMPS's figure) are not kept between expansions, each expansion refactorises
+  // them (one more far-field factorisation per run for about half the peak memory).
+  double keep_far_factors_mb = 128;
 };
 
 struct CouplingParams {

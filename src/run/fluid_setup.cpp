@@ -52,6 +52,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   s.stokes = std::make_unique<PenalisedStokes>(*s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; },
                                                paper_boundary_conditions(*s.mesh, f));
   s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur);
+  s.stokes->set_far_factor_budget(f.keep_far_factors_mb);
   return s;
 }
 

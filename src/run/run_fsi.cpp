@@ -56,6 +56,9 @@ Json fluid_json(const PenalisedStokes& stokes) {
   j["far_field_factorizations"] = t.regions;
   j["far_factorization_s"] = t.far_factorization;
   j["expansion_s"] = t.expansion;
+  // Far fields over fluid.keep_far_factors_mb are refactorised for each expansion.
+  j["far_factor_mb"] = stokes.region() ? stokes.region()->timing().far_factor_mb : 0.0;  // the region in use
+  j["far_field_refactorizations"] = t.far_refactorizations;
   if (const RegionSchurSolver* r = stokes.region()) {
     j["near_unknowns"] = r->near_unknowns();
     j["interface_unknowns"] = r->interface_unknowns();
@@ -128,6 +131,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
     FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force, *relaxation},
                             c.coupling.tol, c.coupling.max_iterations);
     loop.progress = progress("");
+    loop.complete_at_end = c.output.png || c.output.vtu;
     result = loop.run();
     for (const auto& r : result.history) {
       times.add("fluid", r.t_fluid);
@@ -142,13 +146,30 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   const Eigen::VectorXd& u = result.structure.u;
   const Eigen::VectorXd u1 = component(u, 0), u2 = component(u, 1);
   const Mesh deformed = displaced(ref, u1, u2);
-  // (A near-only solution, whose far-field expansion failed, is not used.)
-  const bool has_fluid = f.stokes->has_solution() && f.stokes->last_solution().exact_on == nullptr;
   const FluidSolution& fluid = f.stokes->last_solution();
   const Eigen::VectorXd& chi = f.stokes->last_solution_chi();
-  const FluidField field(*f.locator, fluid);
-  const double v_norm = has_fluid ? velocity_l2_over(field, deformed) : NAN;
-  const double v_norm_chi = has_fluid ? velocity_l2_on_chi(field, *f.mesh, chi) : NAN;
+  // The norms read the fields in the structure only, which a near-only solution (no
+  // drawn or written fluid, or a failed expansion) holds; if the structure reaches
+  // beyond it, the solution is completed first, and failing that they are NaN.
+  double v_norm = NAN, v_norm_chi = NAN;
+  if (f.stokes->has_solution()) {
+    auto norms = [&] {
+      const FluidField field(*f.locator, fluid);
+      v_norm = velocity_l2_over(field, deformed);
+      v_norm_chi = velocity_l2_on_chi(field, *f.mesh, chi);
+    };
+    try {
+      norms();
+    } catch (const FieldNotComputed&) {
+      try {
+        f.stokes->complete();
+        norms();
+      } catch (const std::exception&) {
+        v_norm = v_norm_chi = NAN;
+      }
+    }
+  }
+  const bool has_fluid = f.stokes->has_solution() && fluid.exact_on == nullptr;  // everywhere
   const std::vector<int> contact_vertices =
       fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
 

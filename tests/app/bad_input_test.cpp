@@ -68,6 +68,7 @@ std::vector<BadInput> bad_inputs() {
       {"omega_zero", fsi, "--set coupling.omega=0", {"--set coupling.omega", "(0, 1]"}},
       {"omega_large", fsi, "--set coupling.omega=1.5", {"coupling.omega", "(0, 1]"}},
       {"tol_zero", fsi, "--set coupling.tol=0", {"coupling.tol", "> 0"}},
+      {"far_budget_negative", fsi + "keep_far_factors_mb = -1\n", "", {"fluid.keep_far_factors_mb", ">= 0"}},
       {"eps_negative", fsi, "--set coupling.eps=-1e-5", {"coupling.eps", ">= 1e-12"}},
       {"eps_underflow", fsi, "--set coupling.eps=1e-300", {"coupling.eps", ">= 1e-12"}},
       {"scheme_unknown", fsi, "--set coupling.scheme=newton", {"coupling.scheme", "constant", "aitken", "iqn-ils"}},

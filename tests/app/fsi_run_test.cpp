@@ -59,6 +59,34 @@ TEST(FsiRun, IterationLimitGivesExitStatus3WithOutputs) {
   fs::remove_all(dir);
 }
 
+// The far-field factors released (fluid.keep_far_factors_mb = 0, as the finest
+// meshes do by default) and a run without the fluid outputs (no expansion to the
+// far field at all) give the default run's numbers.
+TEST(FsiRun, ReleasedFarFactorsAndNoFluidOutputsChangeNoResult) {
+  const fs::path dir = testing::scratch_dir("fsi-release");
+  const std::string base = "run " + kCoarse + " -q --set output.png=false";
+  for (const std::string& variant : {std::string(" --out kept"), std::string(" --set fluid.keep_far_factors_mb=0 --out released"),
+                                     std::string(" --set output.vtu=false --out bare")}) {
+    const testing::CliRun r = testing::run_cli(base + variant, dir);
+    ASSERT_EQ(r.status, 0) << variant << "\n" << r.err;
+  }
+  const auto kept = nlohmann::json::parse(testing::slurp(dir / "kept/summary.json"));
+  const auto released = nlohmann::json::parse(testing::slurp(dir / "released/summary.json"));
+  const auto bare = nlohmann::json::parse(testing::slurp(dir / "bare/summary.json"));
+  EXPECT_EQ(kept["fluid"]["far_field_refactorizations"], 0);
+  EXPECT_GE(released["fluid"]["far_field_refactorizations"].get<int>(), 1);
+  EXPECT_GT(released["fluid"]["far_factor_mb"].get<double>(), 0);
+  EXPECT_EQ(bare["fluid"]["expansion_s"].get<double>(), 0.0);  // never expanded
+  for (const auto* j : {&released, &bare}) {
+    EXPECT_EQ((*j)["iterations"], kept["iterations"]);
+    for (const char* key : {"fluid_velocity_l2_in_structure", "fluid_velocity_l2_on_chi", "final_increment_l2"})
+      EXPECT_NEAR((*j)[key].get<double>(), kept[key].get<double>(), 1e-10 * std::abs(kept[key].get<double>())) << key;
+  }
+  EXPECT_TRUE(fs::exists(dir / "released/fluid.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "bare/fluid.vtu"));
+  fs::remove_all(dir);
+}
+
 // ν = 0.4999999 (allowed: ν < 0.5) used to end in a segmentation fault: λ/μ = 5e6 made
 // the contact QP's KKT check fail in the first pass, and the writer then read the
 // multipliers of an empty QP result. Now the QP passes (backward-error KKT check) and

@@ -70,6 +70,21 @@ TEST(MumpsSchur, EqualsTheDenseSchurComplementAndSolvesThroughIt) {
     for (int i = 0; i < nf; ++i) got_F[i] = z[F[i]];
     EXPECT_LT((got_F - z_F).norm(), 1e-10 * z_F.norm()) << "trial " << trial;
   }
+
+  // Released: S stays, the factors go (no condensation or expansion without them);
+  // a new factorisation gives the same numbers, bit for bit.
+  const Eigen::MatrixXd S_before = schur.schur();
+  EXPECT_GT(schur.factor_memory_mb(), 0);
+  schur.release();
+  EXPECT_FALSE(schur.has_factors());
+  EXPECT_EQ(schur.schur(), S_before);
+  EXPECT_THROW(schur.condense(b), std::logic_error);
+  EXPECT_THROW(schur.expand(x_G), std::logic_error);
+  schur.factorize(K, gamma);
+  EXPECT_TRUE(schur.has_factors());
+  EXPECT_EQ(schur.schur(), S_before);
+  EXPECT_EQ(schur.condense(b), y_mumps);
+  EXPECT_EQ(schur.expand(x_G), x);
 }
 
 TEST(MumpsSchur, RefusesAnEmptyOrFullInterface) {

@@ -112,6 +112,56 @@ TEST(RegionSchur, NearOnlySolvesAreExactNearTheStructureAndCompleteOnDemand) {
   EXPECT_EQ(schur.timing().regions, 2);
 }
 
+// Far factors over the memory budget (here: any) are released once S is known; each
+// expansion refactorises the far field and releases the near factors, which the
+// next solve redoes. The solutions are the same; a solution left near-only when its
+// region is replaced is not completed (that would cost a factorisation) but stays
+// exact near the structure.
+TEST(RegionSchur, ReleasedFarFactorsGiveTheSameSolutions) {
+  const Box box;
+  PenalisedStokes whole = box.stokes(1e-5, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-5, FluidFactorization::schur);
+  schur.set_far_factor_budget(0);
+  const std::vector<Eigen::VectorXd> chis = {box.block(0.30, 0.40, 0.30, 0.15), box.block(0.32, 0.37, 0.30, 0.15),
+                                             box.block(0.34, 0.35, 0.30, 0.16)};
+  for (std::size_t k = 0; k < chis.size(); ++k) {
+    whole.set_chi(chis[k]), schur.set_chi(chis[k]);
+    EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10) << "step " << k;
+    EXPECT_EQ(schur.timing().regions, 1);
+    EXPECT_EQ(schur.timing().far_refactorizations, static_cast<int>(k) + 1);  // one per expansion
+  }
+  ASSERT_NE(schur.region(), nullptr);
+  EXPECT_FALSE(schur.region()->keeps_far_factors());
+  EXPECT_GT(schur.region()->timing().far_factor_mb, 0);
+
+  // A near-only solve, then a χ outside the region: the new region leaves the
+  // previous solution as it was (no refactorisation); the new solve is exact.
+  const Eigen::VectorXd last = box.block(0.36, 0.33, 0.30, 0.16);
+  whole.set_chi(last), schur.set_chi(last);
+  const FluidSolution& a = whole.solve();
+  schur.solve(true);
+  const Eigen::VectorXd moved = box.block(0.05, 0.75, 0.20, 0.15);
+  schur.set_chi(moved);
+  schur.set_eps(1e-6);  // settles the pending expansion the same way
+  EXPECT_EQ(schur.timing().far_refactorizations, 3);
+  const FluidSolution& old = schur.last_solution();
+  ASSERT_NE(old.exact_on, nullptr);
+  const PointLocator locator(box.mesh);
+  const FluidField fa(locator, a), fo(locator, old);
+  for (int t = 0; t < box.mesh.num_triangles(); ++t) {
+    const Location centre{t, Eigen::Vector3d::Constant(1.0 / 3)};
+    if ((*old.exact_on)[t])
+      EXPECT_LT((fa.at(centre).v - fo.at(centre).v).norm(), 1e-10 * (1 + fa.at(centre).v.norm())) << t;
+    else
+      EXPECT_THROW(fo.at(centre), FieldNotComputed) << t;
+  }
+  EXPECT_EQ(&schur.complete(), &old);  // nothing left to complete
+  whole.set_chi(moved), whole.set_eps(1e-6);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_EQ(schur.timing().regions, 2);
+  EXPECT_EQ(schur.timing().far_refactorizations, 4);
+}
+
 TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
   const Box box;
   PenalisedStokes whole = box.stokes(1e-4, FluidFactorization::whole);
