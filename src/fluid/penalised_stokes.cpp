@@ -362,16 +362,20 @@ void PenalisedStokes::build_near_region() {
   const Stopwatch clock;
   Point lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   double h_max = 0;
-  for (int t = 0; t < mesh_.num_triangles(); ++t) {
-    if (chi_[t] == 0) continue;
-    const auto& tri = mesh_.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const Point& a = mesh_.vertices[tri[k]];
-      lo = lo.cwiseMin(a), hi = hi.cwiseMax(a);
-      h_max = std::max(h_max, (a - mesh_.vertices[tri[(k + 1) % 3]]).norm());
+  auto cover = [&](const Eigen::VectorXd& support) {  // grow [lo, hi] over its triangles
+    for (int t = 0; t < mesh_.num_triangles(); ++t) {
+      if (support[t] == 0) continue;
+      const auto& tri = mesh_.triangles[t];
+      for (int k = 0; k < 3; ++k) {
+        const Point& a = mesh_.vertices[tri[k]];
+        lo = lo.cwiseMin(a), hi = hi.cwiseMax(a);
+        h_max = std::max(h_max, (a - mesh_.vertices[tri[(k + 1) % 3]]).norm());
+      }
     }
-  }
+  };
+  cover(chi_);
   const Point size = hi - lo;
+  if (region_margin_ == 0 && region_hint_.size() == chi_.size()) cover(region_hint_);  // the first region only
   region_margin_ = region_margin_ == 0 ? std::max(0.5 * size.minCoeff(), 2 * h_max) : 2 * region_margin_;
   lo.array() -= region_margin_, hi.array() += region_margin_;
   const int nt = mesh_.num_triangles();

@@ -69,6 +69,11 @@ class PenalisedStokes {
   // Far fields whose factorisation needs more than this (MB, MUMPS's estimate) are
   // not kept: each expansion refactorises them (RegionSchurSolver). INFINITY: keep all.
   void set_far_factor_budget(double mb) { far_factor_budget_mb_ = mb; }
+  // Where χ is expected to go (per triangle, as χ; empty: nowhere known): the first
+  // near region also covers this support, so that a structure moving there does not
+  // force a second far-field factorisation. The coupling predicts it from the
+  // structure under its applied loads alone.
+  void set_region_hint(Eigen::VectorXd chi_hint) { region_hint_ = std::move(chi_hint); }
   // The substructured solver in use (null before the first substructured solve).
   const RegionSchurSolver* region() const { return region_.get(); }
   // Forget the last solution (the next solve() refactorises), e.g. for a new run.
@@ -139,6 +144,7 @@ class PenalisedStokes {
   // far-field factorisation, and only a failed solve right after would need it).
   std::vector<char> stale_mask_;
   double far_factor_budget_mb_ = INFINITY;
+  Eigen::VectorXd region_hint_;       // see set_region_hint
   double region_margin_ = 0;           // the near region: χ's support's box grown by this
   std::vector<char> region_interior_vertex_;  // vertices whose triangles are all near
   bool region_too_large_ = false;      // the near region would be most of D: solve whole

@@ -13,7 +13,8 @@ namespace fsi {
 namespace {
 
 struct Box {
-  Mesh mesh = testing::structured_rectangle(1.0, 1.0, 16, 16);
+  explicit Box(int n = 16) : mesh(testing::structured_rectangle(1.0, 1.0, n, n)) {}
+  Mesh mesh;
   // χ = 1 on the triangles whose barycentre lies in [x0, x0 + w] × [y0, y0 + h].
   Eigen::VectorXd block(double x0, double y0, double w, double h) const {
     Eigen::VectorXd c = Eigen::VectorXd::Zero(mesh.num_triangles());
@@ -160,6 +161,28 @@ TEST(RegionSchur, ReleasedFarFactorsGiveTheSameSolutions) {
   EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
   EXPECT_EQ(schur.timing().regions, 2);
   EXPECT_EQ(schur.timing().far_refactorizations, 4);
+}
+
+// A hint of where χ will go makes the first region cover it: a χ that moves there
+// needs no second far-field factorisation (without the hint it does, as in the
+// first test), and the solution is still the whole solve's.
+TEST(RegionSchur, AHintOfWhereChiGoesSavesTheSecondRegion) {
+  const Box box(32);
+  PenalisedStokes whole = box.stokes(1e-5, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-5, FluidFactorization::schur);
+  const Eigen::VectorXd start = box.block(0.44, 0.62, 0.12, 0.08), end = box.block(0.44, 0.15, 0.12, 0.08);
+  schur.set_region_hint(end);
+  for (const Eigen::VectorXd* chi : {&start, &end}) {
+    whole.set_chi(*chi), schur.set_chi(*chi);
+    EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  }
+  EXPECT_EQ(schur.timing().regions, 1);
+  ASSERT_NE(schur.region(), nullptr);  // substructured, not the whole fallback
+
+  PenalisedStokes unhinted = box.stokes(1e-5, FluidFactorization::schur);
+  for (const Eigen::VectorXd* chi : {&start, &end}) unhinted.set_chi(*chi), unhinted.solve();
+  EXPECT_EQ(unhinted.timing().regions, 2);
+  ASSERT_NE(unhinted.region(), nullptr);
 }
 
 TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
