@@ -2,11 +2,13 @@
 // sparse direct solver make_sparse_solver knows: full assembly of the condensed
 // Stokes system, numeric factorisation (symbolic analysis done once, outside the
 // timing, and reused), one solve, and one PenalisedStokes::solve() after a χ change
-// (incremental assembly + factorisation + solve + bubbles + residual check).
+// (incremental assembly + factorisation + solve + bubbles + residual check); and the
+// substructured solve: the far field's set-up, the near solve per χ, the expansion.
 // χ alternates between the undeformed structure and the structure displaced by
 // 0.1·u_g (u_g: its contact solution under gravity), the first step of the paper's
 // iteration with ω = 0.1. docs/performance.md gives the commands and the numbers.
 //   build/bench/fluid_bench --benchmark_filter='factorize/.*/hF:0.01$'
+//   build/bench/fluid_bench --benchmark_filter='(far_setup|near_solve).*'  # substructured
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -134,6 +136,57 @@ void BM_StokesSolve(benchmark::State& state, const std::string& solver_name,
   size_counters(state, b);
 }
 
+// The substructured solve (fluid.factorization = "schur", the default): the far
+// field's set-up when the near region is chosen (METIS order of the vertex graph,
+// far-field assembly, MUMPS partial factorisation with S, condensation, the near
+// pattern's analysis) together with the first near solve; then, per χ change, the
+// near solve alone (what a coupling step pays), or with the expansion to the far
+// field (complete(), what the outputs need).
+std::unique_ptr<PenalisedStokes> substructured(const Box& b) {
+  auto stokes = stokes_with(b, kDefaultSparseSolver);
+  stokes->set_factorization(FluidFactorization::schur);
+  return stokes;
+}
+
+void region_counters(benchmark::State& state, const PenalisedStokes& stokes) {
+  if (const RegionSchurSolver* r = stokes.region()) {
+    state.counters["near_unknowns"] = r->near_unknowns();
+    state.counters["interface_unknowns"] = r->interface_unknowns();
+    state.counters["far_factor_MB"] = r->timing().far_factor_mb;
+  }
+  state.counters["regions"] = stokes.timing().regions;
+}
+
+void BM_FarSetup(benchmark::State& state, const std::string& hF) {
+  Box& b = box(hF);
+  std::unique_ptr<PenalisedStokes> stokes;
+  for (auto _ : state) {
+    state.PauseTiming();
+    stokes = substructured(b);
+    stokes->set_chi(b.chi_rest);
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(stokes->solve(/*near_only=*/true).p.data());
+  }
+  region_counters(state, *stokes);
+  size_counters(state, b);
+}
+
+void BM_NearSolve(benchmark::State& state, const std::string& hF, bool expand) {
+  Box& b = box(hF);
+  auto stokes = substructured(b);
+  stokes->set_chi(b.chi_rest);
+  stokes->solve(true);  // the far field's set-up, outside the loop
+  bool moved = false;
+  for (auto _ : state) {
+    moved = !moved;
+    stokes->set_chi(moved ? b.chi_moved : b.chi_rest);
+    benchmark::DoNotOptimize(stokes->solve(/*near_only=*/!expand).p.data());
+  }
+  region_counters(state, *stokes);
+  state.counters["chi_changes"] = b.chi_changes;
+  size_counters(state, b);
+}
+
 void register_all() {
   for (const std::string& hF : kSizes) {
     benchmark::RegisterBenchmark(("assembly/hF:" + hF).c_str(), BM_Assembly, hF)
@@ -147,6 +200,11 @@ void register_all() {
       benchmark::RegisterBenchmark(("stokes_solve/" + tail).c_str(), BM_StokesSolve, solver, hF)
           ->Unit(benchmark::kMillisecond);
     }
+    benchmark::RegisterBenchmark(("far_setup/hF:" + hF).c_str(), BM_FarSetup, hF)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("near_solve/hF:" + hF).c_str(), BM_NearSolve, hF, false)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("near_solve_expanded/hF:" + hF).c_str(), BM_NearSolve, hF, true)
+        ->Unit(benchmark::kMillisecond);
   }
 }
 
