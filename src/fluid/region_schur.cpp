@@ -16,12 +16,12 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 // The pattern of the matrix assembled from `triangles` on the unknowns local[·]
-// (−1: not in this matrix), both triangles stored, rows sorted; the first `dense`
-// local unknowns are coupled to each other as well (room for a dense block). Built
-// column by column from the dof–triangle incidence: no triplet list, which at
-// hF = 0.0025 would hold 12 million entries.
+// (−1: not in this matrix), both triangles stored (or, if `lower`, the lower one
+// only), rows sorted; the first `dense` local unknowns are coupled to each other as
+// well (room for a dense block). Built column by column from the dof–triangle
+// incidence: no triplet list, which at hF = 0.0025 would hold 12 million entries.
 SparseMatrix element_pattern(int n, const std::vector<int>& triangles, const std::vector<int>& local,
-                             const ElementDofs& dofs, int dense) {
+                             const ElementDofs& dofs, int dense, bool lower = false) {
   std::vector<int> start(n + 1, 0), incident;
   std::vector<std::array<int, 9>> element_dofs(triangles.size());
   for (std::size_t e = 0; e < triangles.size(); ++e) {
@@ -44,7 +44,7 @@ SparseMatrix element_pattern(int n, const std::vector<int>& triangles, const std
       for (int i = 0; i < dense; ++i) column.push_back(i), seen[i] = j;
     for (int k = start[j]; k < start[j + 1]; ++k)
       for (int l : element_dofs[incident[k]])
-        if (l >= 0 && seen[l] != j) column.push_back(l), seen[l] = j;
+        if (l >= (lower ? j : 0) && seen[l] != j) column.push_back(l), seen[l] = j;
     std::sort(column.begin(), column.end());
     inner.insert(inner.end(), column.begin(), column.end());
     outer[j + 1] = static_cast<int>(inner.size());
@@ -57,8 +57,10 @@ SparseMatrix element_pattern(int n, const std::vector<int>& triangles, const std
   return A;
 }
 
-// Adds an element to A (pattern from element_pattern) and to b, unknowns mapped by local.
-void add_element(SparseMatrix& A, Eigen::VectorXd& b, const ElementSystem& e, const std::vector<int>& local) {
+// Adds an element to A (pattern from element_pattern; `lower`: its lower triangle
+// only) and to b, unknowns mapped by local.
+void add_element(SparseMatrix& A, Eigen::VectorXd& b, const ElementSystem& e, const std::vector<int>& local,
+                 bool lower = false) {
   std::array<int, 9> l;
   for (int k = 0; k < 9; ++k) l[k] = e.dof[k] < 0 ? -1 : local[e.dof[k]];
   const int* outer = A.outerIndexPtr();
@@ -70,7 +72,7 @@ void add_element(SparseMatrix& A, Eigen::VectorXd& b, const ElementSystem& e, co
     const int* first = inner + outer[l[j]];
     const int* last = inner + outer[l[j] + 1];
     for (int i = 0; i < 9; ++i)
-      if (l[i] >= 0) values[std::lower_bound(first, last, l[i]) - inner] += e.K(i, j);
+      if (l[i] >= (lower ? l[j] : 0)) values[std::lower_bound(first, last, l[i]) - inner] += e.K(i, j);
   }
 }
 
@@ -119,14 +121,12 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
 
   std::vector<int> local(n, -1);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) local[far_dofs_[k]] = static_cast<int>(k);
-  K_far_ = element_pattern(static_cast<int>(far_dofs_.size()), far_triangles, local, dofs, 0);
-  b_far_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(far_dofs_.size()));
-  for (int t : far_triangles) add_element(K_far_, b_far_, element(t), local);
-  for (std::size_t k = 0; k < far_dofs_.size(); ++k) b_far_[static_cast<Eigen::Index>(k)] += load[far_dofs_[k]];
-  // Only the lower triangle is kept: MUMPS reads it in place, and the residual check
+  // Only the lower triangle: MUMPS reads it in place, and the residual check
   // multiplies by its symmetric view (half the memory of the largest matrix).
-  K_far_ = SparseMatrix(K_far_.triangularView<Eigen::Lower>());
-  K_far_.makeCompressed();
+  K_far_ = element_pattern(static_cast<int>(far_dofs_.size()), far_triangles, local, dofs, 0, /*lower=*/true);
+  b_far_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(far_dofs_.size()));
+  for (int t : far_triangles) add_element(K_far_, b_far_, element(t), local, /*lower=*/true);
+  for (std::size_t k = 0; k < far_dofs_.size(); ++k) b_far_[static_cast<Eigen::Index>(k)] += load[far_dofs_[k]];
   if (!rank.empty()) {  // the far unknowns by their rank in the given order
     far_order_.resize(far_dofs_.size());
     for (std::size_t k = 0; k < far_order_.size(); ++k) far_order_[k] = static_cast<int>(k);
