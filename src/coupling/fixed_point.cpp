@@ -103,14 +103,15 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     Eigen::VectorXd b_S;
     {
       const Stopwatch clock;  // step 3: b_S from v∘φ^k, p∘φ^k (eq. 33)
+      auto load = [&](const FluidSolution& f) {
+        const FluidField field(p_.fluid_locator, f);
+        return Eigen::VectorXd(p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u));
+      };
       try {
         try {
-          const FluidField field(p_.fluid_locator, *fluid);
-          b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+          b_S = load(*fluid);
         } catch (const FieldNotComputed&) {  // a vertex samples the far field: expand
-          fluid = &p_.fluid.complete();
-          const FluidField field(p_.fluid_locator, *fluid);
-          b_S = p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u);
+          b_S = load(p_.fluid.complete());
         }
       } catch (const std::exception& e) {
         fail("the force transfer", e.what());

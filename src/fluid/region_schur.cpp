@@ -136,7 +136,6 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   release_free_heap();
   far_.factorize(K_far_, gamma_, far_order_);
   y_gamma_ = far_.condense(b_far_);
-  timing_.far_factor_mb = far_.factor_memory_mb();
   keep_far_ = !(far_.factor_memory_mb() > far_factor_budget_mb);
   if (!keep_far_) {
     far_.release();

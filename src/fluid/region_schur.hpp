@@ -43,7 +43,6 @@ struct RegionSchurTiming {
   double near_assembly = 0, near_factorization = 0, near_solve = 0, expansion = 0;
   int near_factorizations = 0;
   int far_refactorizations = 0;  // for expansions, after the far factors were released
-  double far_factor_mb = 0;      // MUMPS's memory for the far field (INFOG(22))
 };
 
 class RegionSchurSolver {
@@ -89,6 +88,8 @@ class RegionSchurSolver {
   const RegionSchurTiming& timing() const { return timing_; }
   // Whether the far factors are kept between expansions (see the constructor).
   bool keeps_far_factors() const { return keep_far_; }
+  // MUMPS's memory for the far field's factorisation (INFOG(22), MB).
+  double far_factor_mb() const { return far_.factor_memory_mb(); }
   // Frees the near factors (the next solve_near() analyses M again).
   void release_near() { near_solver_.reset(); }
 

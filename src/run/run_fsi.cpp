@@ -57,7 +57,7 @@ Json fluid_json(const PenalisedStokes& stokes) {
   j["far_factorization_s"] = t.far_factorization;
   j["expansion_s"] = t.expansion;
   // Far fields over fluid.keep_far_factors_mb are refactorised for each expansion.
-  j["far_factor_mb"] = stokes.region() ? stokes.region()->timing().far_factor_mb : 0.0;  // the region in use
+  j["far_factor_mb"] = stokes.region() ? stokes.region()->far_factor_mb() : 0.0;  // the region in use
   j["far_field_refactorizations"] = t.far_refactorizations;
   if (const RegionSchurSolver* r = stokes.region()) {
     j["near_unknowns"] = r->near_unknowns();
