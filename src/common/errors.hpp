@@ -2,6 +2,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace fsi {
 
@@ -13,6 +14,14 @@ struct InputError : std::runtime_error {
 // A solver failed during a run (QP, factorisation, NaN): exit status 1.
 struct SolverFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A file could not be written (full disk, lost permission): exit status 1. The
+// message names the path and the system's reason (strerror).
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+  // "cannot write <path>: <strerror(err)>"
+  OutputError(const std::string& path, int err);
 };
 
 }  // namespace fsi

@@ -1,22 +1,51 @@
 #include "common/interrupt.hpp"
 
+#include <unistd.h>
+
 #include <csignal>
+#include <cstring>
+#include <initializer_list>
 
 namespace fsi {
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+volatile std::sig_atomic_t g_signal = 0;
+// The temporary file's path, copied in (not pointed to) so that the handler reads
+// memory that stays valid; g_temporary_set guards it.
+char g_temporary[4096];
+volatile std::sig_atomic_t g_temporary_set = 0;
 
-extern "C" void on_sigint(int) {
-  g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process
+extern "C" void on_stop_signal(int sig) {
+  if (g_signal == 0) {
+    g_signal = sig;
+    return;
+  }
+  if (g_temporary_set) ::unlink(g_temporary);  // async-signal-safe
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
 }
 
 }  // namespace
 
-void install_interrupt_handler() { std::signal(SIGINT, on_sigint); }
-bool interrupt_requested() { return g_interrupted != 0; }
-void request_interrupt() { g_interrupted = 1; }
-void clear_interrupt() { g_interrupted = 0; }
+void install_interrupt_handler() {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_stop_signal);
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
+bool interrupt_requested() { return g_signal != 0; }
+int interrupt_signal() { return g_signal; }
+void request_interrupt(int signal) { g_signal = signal; }
+void clear_interrupt() { g_signal = 0; }
+int interrupted_exit_status() { return 128 + (g_signal ? g_signal : SIGINT); }
+
+void set_temporary_file(const char* path) {
+  g_temporary_set = 0;
+  std::strncpy(g_temporary, path, sizeof g_temporary - 1);
+  g_temporary[sizeof g_temporary - 1] = '\0';
+  g_temporary_set = 1;
+}
+
+void clear_temporary_file() { g_temporary_set = 0; }
 
 }  // namespace fsi

@@ -1,17 +1,28 @@
-// Ctrl-C (SIGINT) as a request to stop cleanly: long loops poll interrupt_requested()
+// SIGINT (Ctrl-C), SIGTERM (kill, a batch system's time limit) and SIGHUP (a closed
+// terminal) as a request to stop cleanly: long loops poll interrupt_requested()
 // between iterations, finish what they are writing, and report that they stopped.
 #pragma once
 
 namespace fsi {
 
-// Installs the handler: the first SIGINT sets the flag, a second one ends the
-// process at once (the default action).
+// Installs the handlers. The first signal sets the flag; a second one removes the
+// temporary file being written, if any, and ends the process with that signal's
+// default action. SIGPIPE and SIGXFSZ are ignored, so that a closed pipe or a file
+// size limit becomes a write error with its errno instead of a silent death.
 void install_interrupt_handler();
 bool interrupt_requested();
-void request_interrupt();  // as if SIGINT arrived (tests)
+int interrupt_signal();   // the signal that asked to stop (0: none)
+void request_interrupt(int signal = 2);  // as if the signal arrived (tests)
 void clear_interrupt();
 
-// Exit status of a run stopped by SIGINT (the shell's convention, 128 + 2).
-inline constexpr int kInterruptedExitStatus = 130;
+// The exit status of a run stopped by a signal: the shell's convention, 128 + signal
+// (130 for SIGINT, 143 for SIGTERM).
+int interrupted_exit_status();
+inline constexpr int kInterruptedExitStatus = 130;  // SIGINT's
+
+// The temporary file being written (at most one at a time): a second signal removes
+// it before the process dies, so that no `*.tmp<pid>` is left behind.
+void set_temporary_file(const char* path);
+void clear_temporary_file();
 
 }  // namespace fsi

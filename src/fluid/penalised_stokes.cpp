@@ -55,14 +55,18 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
   // Prescribed velocities on the Dirichlet labels.
   z_fixed_ = Eigen::VectorXd::Zero(3 * nv);
   std::vector<bool> fixed(3 * nv, false);
-  for (int label : bc.dirichlet_labels)
+  for (int label : bc.dirichlet_labels) {
+    const VectorField* value = &bc.g;
+    for (const auto& [l, g] : bc.dirichlet_values)
+      if (l == label) value = &g;
     for (int v : mesh.vertices_on(label)) {
-      const Point g = bc.g(mesh.vertices[v]);
+      const Point g = (*value)(mesh.vertices[v]);
       for (int c = 0; c < 2; ++c) {
         fixed[c * nv + v] = true;
         z_fixed_[c * nv + v] = g[c];
       }
     }
+  }
   free_index_.assign(3 * nv, -1);
   for (int d = 0; d < 3 * nv; ++d)
     if (!fixed[d]) {

@@ -26,6 +26,10 @@ using VectorField = std::function<Point(const Point&)>;
 struct FluidBoundaryConditions {
   std::vector<int> dirichlet_labels;                 // velocity prescribed here
   VectorField g = [](const Point&) { return Point(0, 0); };  // its value
+  // A value of its own on some of those labels (the inflow on Σ4): boundary
+  // conditions belong to labels, never to coordinates. At a vertex on two labels the
+  // later label in dirichlet_labels decides.
+  std::vector<std::pair<int, VectorField>> dirichlet_values;
   std::vector<std::pair<int, VectorField>> tractions;  // σ n = h on these labels
 };
 

@@ -57,6 +57,7 @@ struct ContactParams {
 
 struct OutputParams {
   std::string dir;   // default out/<name>
+  std::string dir_origin;  // where dir came from (the file, --set, --out), for messages
   bool png = true;
   bool vtu = true;
 };
@@ -73,14 +74,21 @@ struct Case {
 };
 
 // Loads `path` (or the built-in §7.2 case if empty), applies `overrides`
-// ("section.key=value", value in TOML syntax or a bare string), and validates.
+// ("section.key=value", value in TOML syntax or a bare string), then `out_dir` as
+// output.dir (taken verbatim, never parsed: --out), and validates every key and the
+// checks between keys. The file system is not looked at beyond the case file: see
+// check_output_dir (io/output_path.hpp) and the mesh checks (run/).
 // Throws InputError "<file>: <key> ...; allowed: ..." on the first problem.
-Case load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+Case load_case(const std::string& path, const std::vector<std::string>& overrides = {},
+               const std::string& out_dir = "");
 
 // The same from TOML text; `origin` names it in messages, relative mesh paths
 // resolve against the current directory.
 Case load_case_text(const std::string& text, const std::string& origin,
-                    const std::vector<std::string>& overrides = {});
+                    const std::vector<std::string>& overrides = {}, const std::string& out_dir = "");
+
+// Every key a case may set ("name", "structure.L", ...), in the order they are read.
+std::vector<std::string> case_keys();
 
 // The resolved case as TOML text (written beside the results, rerunnable).
 std::string to_toml(const Case& c);

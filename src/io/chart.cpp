@@ -9,7 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "io/png.hpp"
 
 namespace fsi {
 namespace {
@@ -175,11 +175,7 @@ void write_chart(const std::string& path, const ChartOptions& o, const std::vect
     cairo_show_text(cr, s.label.c_str());
     ly += 18;
   }
-  cairo_surface_flush(surface);
-  write_atomically_to(path, [&](const std::string& tmp) {
-    if (cairo_surface_write_to_png(surface, tmp.c_str()) != CAIRO_STATUS_SUCCESS)
-      throw std::runtime_error("cannot write " + path);
-  });
+  write_png_atomically(path, surface);
 }
 
 }  // namespace fsi

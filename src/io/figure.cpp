@@ -8,7 +8,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "io/png.hpp"
 
 namespace fsi {
 namespace {
@@ -269,11 +269,7 @@ void Figure::axes(const std::string& x_label, const std::string& y_label) {
 }
 
 void Figure::save_png(const std::string& path) {
-  cairo_surface_flush(surface_);
-  write_atomically_to(path, [&](const std::string& tmp) {
-    if (cairo_surface_write_to_png(surface_, tmp.c_str()) != CAIRO_STATUS_SUCCESS)
-      throw std::runtime_error("cannot write " + path);
-  });
+  write_png_atomically(path, surface_);
 }
 
 std::vector<std::vector<Point>> boundary_loops(const Mesh& mesh) {

@@ -2,17 +2,18 @@
 
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/mesh_checks.hpp"
 
 namespace fsi {
 
-Mesh make_fluid_mesh(const Case& c) {
+Mesh build_fluid_mesh(const Case& c) {
   const FluidParams& f = *c.fluid;
   const ObstacleParams& o = c.obstacle;
   if (f.mesh.empty()) {
     try {
       return generate_fluid_mesh({f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h});
-    } catch (const MeshError& e) {
-      throw SolverFailure(std::string("fluid mesh generation failed: ") + e.what());
+    } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
+      throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
     }
   }
   Mesh mesh;
@@ -22,9 +23,14 @@ Mesh make_fluid_mesh(const Case& c) {
     throw InputError(c.source + ": fluid.mesh: " + e.what());
   }
   if (mesh.num_triangles() > kMaxFluidTriangles)
-    throw InputError(c.source + ": fluid.mesh: " + f.mesh + " has " +
-                     std::to_string(mesh.num_triangles()) + " triangles; allowed: at most " +
-                     std::to_string(static_cast<long>(kMaxFluidTriangles)));
+    throw InputError(c.source + ": fluid.mesh: " + f.mesh + " has " + std::to_string(mesh.num_triangles()) +
+                     " triangles; allowed: at most " + std::to_string(static_cast<long>(kMaxFluidTriangles)));
+  return mesh;
+}
+
+Mesh make_fluid_mesh(const Case& c) {
+  Mesh mesh = build_fluid_mesh(c);
+  if (!c.fluid->mesh.empty()) check_fluid_mesh(c, mesh);
   return mesh;
 }
 
@@ -32,13 +38,13 @@ FluidBoundaryConditions paper_boundary_conditions(const Mesh& mesh, const FluidP
   FluidBoundaryConditions bc;
   for (const char* name : {"Sigma_1", "Sigma_3", "Sigma_4", "Sigma_5"})
     bc.dirichlet_labels.push_back(mesh.label(name));
-  const double L1 = f.L1, H1 = f.H1, Vmax = f.Vmax;
-  // Only Σ4 (y = H1) carries the inflow; g vanishes at its ends, so the corners
-  // shared with Σ1, Σ3 agree.
-  bc.g = [L1, H1, Vmax](const Point& x) {
-    if (std::abs(x.y() - H1) > 1e-12 * std::max(1.0, std::abs(H1))) return Point(0, 0);
+  // The inflow on the label Σ4, whatever its coordinates (a mesh whose Σ4 is not at
+  // y = H1 is refused by check_fluid_mesh). g vanishes at x = 0 and x = L1, so the
+  // corners shared with the walls Σ1, Σ3 agree.
+  const double L1 = f.L1, Vmax = f.Vmax;
+  bc.dirichlet_values.emplace_back(mesh.label("Sigma_4"), [L1, Vmax](const Point& x) {
     return Point(0, Vmax * 4 * x.x() * (x.x() - L1) / (L1 * L1));
-  };
+  });
   return bc;
 }
 

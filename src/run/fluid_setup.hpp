@@ -19,10 +19,14 @@ struct FluidSetup {
   std::unique_ptr<PenalisedStokes> stokes;
 };
 
-// Builds or reads the mesh of D; a bad user file is an InputError.
+// Generates or reads the mesh of D: a bad user file is an InputError, a failure to
+// mesh validated geometry a SolverFailure. Depends on fluid.* and obstacle.* only.
+Mesh build_fluid_mesh(const Case& c);
+// build_fluid_mesh, then (a mesh file) check_fluid_mesh against the case's keys.
 Mesh make_fluid_mesh(const Case& c);
 
-// v = g on Σ4 (g = (0, Vmax·4x(x − L1)/L1²)), v = 0 on Σ1, Σ3, Σ5, Σ2 traction-free.
+// v = g on the label Σ4 (g = (0, Vmax·4x(x − L1)/L1²)), v = 0 on Σ1, Σ3, Σ5, Σ2
+// traction-free.
 FluidBoundaryConditions paper_boundary_conditions(const Mesh& mesh, const FluidParams& f);
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);

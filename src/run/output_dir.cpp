@@ -1,30 +1,68 @@
 #include "run/output_dir.hpp"
 
-#include <unistd.h>
-
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "common/errors.hpp"
+#include "io/atomic_file.hpp"
 
 namespace fsi {
 
-void prepare_output_dir(const std::string& dir, const std::string& source) {
+const std::vector<std::string>& output_file_names() {
+  static const std::vector<std::string> names = {"summary.json", "case.toml",     "history.csv",  "fluid.vtu",
+                                                 "structure.vtu", "fsi.pvd",      "fsi.png",      "fluid.png",
+                                                 "structure.png", "table.md",     "table.csv"};
+  return names;
+}
+
+void remove_stale_outputs(const std::string& dir, const std::string& keep) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError(source + ": output.dir = \"" + dir + "\" cannot be created" +
-                     (ec ? " (" + ec.message() + ")" : std::string()) + "; allowed: a writable directory");
-  const std::string probe = (fs::path(dir) / (".write-test-" + std::to_string(::getpid()))).string();
-  {
-    std::ofstream out(probe);
-    if (!out)
-      throw InputError(source + ": output.dir = \"" + dir +
-                       "\" is not writable; allowed: a writable directory");
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    for (const std::string& name : output_file_names())
+      if ((file == name && name != keep) || is_temporary_of(file, name)) stale.push_back(it->path());
   }
-  std::remove(probe.c_str());
+  for (const auto& p : stale)
+    if (!fs::is_directory(fs::symlink_status(p, ec))) fs::remove(p, ec);
+}
+
+void RunOutputs::begin(Json header) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  if (ec) throw OutputError(dir_, ec.value());
+  header["status"] = "writing";
+  write_json(path("summary.json"), header);  // first: the directory now says it is in flux
+  remove_stale_outputs(dir_, "summary.json");
+}
+
+void RunOutputs::write(const std::string& name, const std::function<void(const std::string& path)>& writer) {
+  try {
+    writer(path(name));
+  } catch (const OutputError& e) {
+    errors_.push_back(e.what());
+  }
+}
+
+Json RunOutputs::finish(Json summary) {
+  if (failed()) {
+    if (summary.contains("status")) summary["solve_status"] = summary["status"];
+    summary["status"] = "failed";
+    const std::string solve_failure = summary.contains("failure") ? summary["failure"].get<std::string>() + "; " : "";
+    summary["failure"] = solve_failure + "writing the outputs: " + failure();
+  }
+  write_json(path("summary.json"), summary);
+  return summary;
+}
+
+std::string RunOutputs::failure() const {
+  std::string all;
+  for (const auto& e : errors_) all += (all.empty() ? "" : "; ") + e;
+  return all;
+}
+
+std::string RunOutputs::path(const std::string& name) const {
+  return (std::filesystem::path(dir_) / name).string();
 }
 
 }  // namespace fsi

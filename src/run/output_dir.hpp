@@ -1,11 +1,50 @@
+// The files of one run in its output directory (README, "What a run writes"). The
+// directory is created at the first write, after validation and the solve; it then
+// holds either one run's files or a summary.json that says "writing": begin() marks
+// it so before anything else and removes what an earlier run left there (its
+// outputs, and the temporaries a SIGKILL may leave), so that a reader never takes
+// the files of two runs for one. A write that fails (a full disk) is recorded, the
+// other files and the summary still get their chance, and the summary says which
+// file failed and why.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
+
+#include "run/summary.hpp"
 
 namespace fsi {
 
-// Creates `dir` if needed and checks a file can be written there; throws
-// InputError naming `source` and output.dir otherwise.
-void prepare_output_dir(const std::string& dir, const std::string& source);
+// Every file name a run or a sweep writes into its directory.
+const std::vector<std::string>& output_file_names();
+
+// Removes `dir`'s files named in output_file_names() but `keep`, and their
+// temporaries; nothing else (a user's own files stay).
+void remove_stale_outputs(const std::string& dir, const std::string& keep = "");
+
+class RunOutputs {
+ public:
+  explicit RunOutputs(std::string dir) : dir_(std::move(dir)) {}
+
+  // Creates the directory, writes summary.json = header + {"status": "writing"} and
+  // removes stale outputs. Throws OutputError (path and strerror) if it cannot.
+  void begin(Json header);
+  // Writes output `name` through writer(path); an OutputError is recorded, not thrown.
+  void write(const std::string& name, const std::function<void(const std::string& path)>& writer);
+  // Writes the final summary.json; after a failed write its status is "failed", with
+  // the reason under "failure" (the solve's own status kept as "solve_status").
+  // Throws OutputError if summary.json itself cannot be written. Returns what it wrote.
+  Json finish(Json summary);
+
+  bool failed() const { return !errors_.empty(); }
+  std::string failure() const;  // the failed writes, "; "-separated
+  std::string path(const std::string& name) const;
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;
+  std::vector<std::string> errors_;
+};
 
 }  // namespace fsi

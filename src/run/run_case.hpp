@@ -17,12 +17,18 @@ struct RunOptions {
 };
 
 struct RunResult {
-  int exit_status = 0;  // 0 converged, 3 iteration limit reached (SPEC §8)
+  // SPEC §8: 0 converged, 1 failed, 3 iteration limit; 128 + signal if stopped by
+  // SIGINT / SIGTERM / SIGHUP.
+  int exit_status = 0;
   Json summary;
-  std::string report;   // a paragraph for the user
+  std::string report;   // a paragraph for the user (the numbers, even after a failure)
+  std::string failure;  // exit status 1: what failed, naming the phase
 };
 
-// Throws InputError (exit 2) or SolverFailure (exit 1).
+// Checks the output directory and the meshes against the case (InputError, exit 2:
+// nothing is written), then solves and writes. A failure after that never escapes
+// as an exception: summary.json says "status": "failed" with the message (and the
+// last good state where there is one) and the result has exit status 1.
 RunResult run_case(const Case& c, const RunOptions& options);
 
 // The contact-only problem of SPEC §2 (a case without [fluid]).
@@ -31,5 +37,16 @@ RunResult run_contact_case(const Case& c, const RunOptions& options);
 // The coupled problem of SPEC §5; with coupling.max_iterations = 0 the fluid alone
 // around the structure at rest.
 RunResult run_fsi_case(const Case& c, const RunOptions& options);
+
+// summary.json's first keys: name, problem ("contact", "fluid", "fsi"), parameters.
+Json summary_header(const Case& c);
+
+class RunOutputs;
+// Writes the run's directory (run/output_dir.hpp): summary.json as "writing", then
+// `files`, then r.summary after `finalise` (the output phase's timing). A failed
+// write turns r into a failure (exit status 1) naming the file and the reason; the
+// report keeps the numbers.
+void write_outputs(const Case& c, RunResult& r, const std::function<void(RunOutputs&)>& files,
+                   const std::function<void(Json&)>& finalise);
 
 }  // namespace fsi

@@ -2,6 +2,7 @@
 
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/mesh_checks.hpp"
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"
 
@@ -12,14 +13,14 @@ std::unique_ptr<QpSolver> make_qp_solver(const std::string& name) {
   return std::make_unique<ActiveSetSolver>();
 }
 
-Mesh make_structure_mesh(const Case& c) {
+Mesh build_structure_mesh(const Case& c) {
   const auto& s = c.structure;
   const auto& o = c.obstacle;
   if (s.mesh.empty()) {
     try {
       return generate_structure_mesh({s.L, s.H, o.xc_min(), o.xc_max(), s.h});
-    } catch (const MeshError& e) {
-      throw SolverFailure(std::string("mesh generation failed: ") + e.what());
+    } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
+      throw SolverFailure(std::string("meshing the structure failed: ") + e.what());
     }
   }
   Mesh mesh;
@@ -29,21 +30,14 @@ Mesh make_structure_mesh(const Case& c) {
     throw InputError(c.source + ": structure.mesh: " + e.what());
   }
   if (mesh.num_triangles() > kMaxStructureTriangles)
-    throw InputError(c.source + ": structure.mesh: " + s.mesh + " has " +
-                     std::to_string(mesh.num_triangles()) + " triangles; allowed: at most " +
-                     std::to_string(static_cast<long>(kMaxStructureTriangles)));
-  // ψ, ψ' must be defined on Γ_C, and the structure must start above the obstacle.
-  const DiskFoundation psi(o.x0, o.y0, o.r);
-  for (int v : mesh.vertices_on(mesh.label("Gamma_C"))) {
-    const Point& X = mesh.vertices[v];
-    if (!psi.defined_at(X.x()))
-      throw InputError(c.source + ": structure.mesh: Gamma_C reaches x = " + std::to_string(X.x()) +
-                       ", outside the obstacle's span; allowed: (x0 - r, x0 + r)");
-  }
-  for (const Point& X : mesh.vertices)
-    if ((X - Point(o.x0, o.y0)).norm() < o.r)
-      throw InputError(c.source + ": structure.mesh: the structure starts inside the obstacle; "
-                       "allowed: every vertex outside the disk");
+    throw InputError(c.source + ": structure.mesh: " + s.mesh + " has " + std::to_string(mesh.num_triangles()) +
+                     " triangles; allowed: at most " + std::to_string(static_cast<long>(kMaxStructureTriangles)));
+  return mesh;
+}
+
+Mesh make_structure_mesh(const Case& c) {
+  Mesh mesh = build_structure_mesh(c);
+  check_structure_mesh(c, mesh);
   return mesh;
 }
 

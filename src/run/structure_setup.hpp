@@ -22,8 +22,11 @@ struct StructureSetup {
   const Mesh& mesh() const { return solver->mesh(); }
 };
 
-// Builds or reads the mesh (MeshError on a bad user file becomes InputError) and
-// checks it against the obstacle.
+// Generates or reads the mesh: a bad user file is an InputError (exit 2), a failure
+// to mesh validated geometry a SolverFailure (exit 1). Depends on structure.* and
+// obstacle.* only (the sweep caches it by them).
+Mesh build_structure_mesh(const Case& c);
+// build_structure_mesh, then check_structure_mesh (run/mesh_checks.hpp) against the case.
 Mesh make_structure_mesh(const Case& c);
 
 StructureSetup make_structure(const Case& c, Mesh mesh,

@@ -1,31 +1,50 @@
 #include "run/summary.hpp"
 
+#include <cmath>
+
 #include "io/atomic_file.hpp"
 
 namespace fsi {
 
+namespace {
+
+Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
+
+}  // namespace
+
+Json to_json(const StructureParams& s) {
+  return {{"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)}, {"h_N", vec(s.h_N)},
+          {"h", s.h}, {"mesh", s.mesh}};
+}
+
+Json to_json(const ObstacleParams& o) {
+  return {{"x0", o.x0}, {"y0", o.y0}, {"r", o.r}, {"gamma", o.gamma}};
+}
+
+Json to_json(const FluidParams& f) {
+  return {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},   {"f", vec(f.f)},
+          {"Vmax", f.Vmax}, {"h", f.h},   {"mesh", f.mesh}, {"chi", f.chi}, {"factorization", f.factorization},
+          {"keep_far_factors_mb", f.keep_far_factors_mb}};
+}
+
+Json to_json(const CouplingParams& k) {
+  return {{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
+          {"scheme", k.scheme}};
+}
+
+Json to_json(const ContactParams& c) { return {{"solver", c.solver}}; }
+
+Json to_json(const OutputParams& o) { return {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}}; }
+
 Json to_json(const Case& c) {
-  auto vec = [](const Point& p) { return Json::array({p.x(), p.y()}); };
   Json j;
   j["name"] = c.name;
-  const auto& s = c.structure;
-  j["structure"] = {{"L", s.L}, {"H", s.H},          {"E", s.E}, {"nu", s.nu},
-                    {"f", vec(s.f)}, {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}};
-  const auto& o = c.obstacle;
-  j["obstacle"] = {{"x0", o.x0}, {"y0", o.y0}, {"r", o.r}, {"gamma", o.gamma}};
-  if (c.fluid) {
-    const auto& f = *c.fluid;
-    j["fluid"] = {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},  {"f", vec(f.f)},
-                  {"Vmax", f.Vmax}, {"h", f.h},   {"mesh", f.mesh}, {"chi", f.chi}};
-    const auto& k = c.coupling;
-    j["coupling"] = {{"eps", k.eps},
-                     {"omega", k.omega},
-                     {"tol", k.tol},
-                     {"max_iterations", k.max_iterations},
-                     {"scheme", k.scheme}};
-  }
-  j["contact"] = {{"solver", c.contact.solver}};
-  j["output"] = {{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};
+  j["structure"] = to_json(c.structure);
+  j["obstacle"] = to_json(c.obstacle);
+  if (c.fluid) j["fluid"] = to_json(*c.fluid);
+  j["coupling"] = to_json(c.coupling);
+  j["contact"] = to_json(c.contact);
+  j["output"] = to_json(c.output);
   return j;
 }
 
@@ -58,6 +77,13 @@ Json timing_json(const PhaseTimes& times, double total) {
   for (const auto& [phase, seconds] : times.all())
     if (!j.contains(phase)) j[phase] = seconds;
   return j;
+}
+
+double max_displacement(const Eigen::VectorXd& u) {
+  const Eigen::Index nv = u.size() / 2;
+  double m = 0;
+  for (Eigen::Index i = 0; i < nv; ++i) m = std::max(m, std::hypot(u[i], u[nv + i]));
+  return m;
 }
 
 void write_json(const std::string& path, const Json& j) {

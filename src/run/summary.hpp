@@ -13,7 +13,15 @@ namespace fsi {
 
 using Json = nlohmann::ordered_json;
 
+// The resolved case, every key (summary.json's "parameters"); each section alone too,
+// which also keys the sweep's setup cache (run/setup_cache.cpp).
 Json to_json(const Case& c);
+Json to_json(const StructureParams& s);
+Json to_json(const ObstacleParams& o);
+Json to_json(const FluidParams& f);
+Json to_json(const CouplingParams& k);
+Json to_json(const ContactParams& c);
+Json to_json(const OutputParams& o);
 Json to_json(const MeshStatistics& s);
 Json to_json(const KktResiduals& k);
 Json to_json(const ContactSummary& s);
@@ -21,5 +29,8 @@ Json to_json(const ContactSummary& s);
 Json timing_json(const PhaseTimes& times, double total);
 
 void write_json(const std::string& path, const Json& j);
+
+// max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
+double max_displacement(const Eigen::VectorXd& u);
 
 }  // namespace fsi

@@ -1,115 +1,163 @@
 #include "run/sweep.hpp"
 
+#include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iomanip>
-#include <map>
-#include <sstream>
+#include <set>
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_path.hpp"
+#include "run/csv.hpp"
 #include "run/output_dir.hpp"
 #include "run/setup_cache.hpp"
+#include "run/sweep_table.hpp"
 
 namespace fsi {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
+namespace fs = std::filesystem;
 
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  bool quoted = false;
-  for (char ch : line) {
-    if (ch == '"') quoted = !quoted;
-    else if (ch == ',' && !quoted) cells.push_back(trim(cell)), cell.clear();
-    else cell += ch;
+// Each column is "label", "paper.<name>" or a case key; output.dir is the sweep's to
+// choose (row-NN), so a column of it is refused rather than silently overridden;
+// a duplicate column would silently take the last.
+void check_header(const CsvTable& csv, const std::string& path) {
+  const std::vector<std::string> keys = case_keys();
+  std::set<std::string> seen;
+  for (std::size_t j = 0; j < csv.header.size(); ++j) {
+    const std::string& h = csv.header[j];
+    const std::string where = path + ": column " + std::to_string(j + 1) + " \"" + h + "\"";
+    if (h.empty()) throw InputError(where + " has no name; allowed: a case key (section.key), paper.<name> or label");
+    if (!seen.insert(h).second) throw InputError(where + " appears twice; allowed: each column once");
+    if (h == "label" || (h.rfind("paper.", 0) == 0 && h.size() > 6)) continue;
+    if (h == "output.dir")
+      throw InputError(where + ": each row writes to <sweep directory>/row-NN; allowed: --out for the sweep's "
+                       "directory, any other case key as a column");
+    if (std::find(keys.begin(), keys.end(), h) == keys.end()) {
+      std::string known;
+      for (const auto& k : keys) known += (known.empty() ? "" : ", ") + k;
+      throw InputError(where + " is not a case key; allowed: label, paper.<name>, " + known);
+    }
   }
-  cells.push_back(trim(cell));
-  return cells;
 }
 
-struct Row {
-  Case c;
-  std::map<std::string, std::string> paper;  // paper.* reference values
-  std::vector<std::string> settings;         // "key=value" of this row, for the table
-};
+std::string row_dir(const std::string& out_dir, std::size_t i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "row-%02zu", i + 1);
+  return (fs::path(out_dir) / name).string();
+}
 
-std::string fmt(double v, int digits = 6) {
-  std::ostringstream s;
-  s << std::setprecision(digits) << v;
-  return s.str();
+// The rows' cases, validated: the sweep's defaults (no pictures unless
+// --keep-outputs) first, so that a row's own output.png / output.vtu wins.
+std::vector<SweepRow> read_rows(const std::string& case_path, const CsvTable& csv, const std::string& rows_csv,
+                                const SweepOptions& options, const std::string& out_dir) {
+  std::vector<SweepRow> rows;
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    SweepRow row;
+    std::vector<std::string> sets = options.overrides;
+    if (!options.keep_outputs) sets.insert(sets.end(), {"output.png=false", "output.vtu=false"});
+    for (std::size_t j = 0; j < csv.header.size(); ++j) {
+      const std::string& key = csv.header[j];
+      const std::string& value = csv.rows[i][j];
+      if (key.rfind("paper.", 0) == 0) row.paper[key.substr(6)] = value;
+      else if (key == "label") row.paper["label"] = value;
+      else if (!value.empty()) sets.push_back(key + "=" + value);
+    }
+    try {
+      row.c = load_case(case_path, sets, row_dir(out_dir, i));
+    } catch (const InputError& e) {
+      throw InputError(rows_csv + ": row " + std::to_string(i + 1) + " (line " + std::to_string(csv.line_of_row[i]) +
+                       "): " + e.what());
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+// Every row's meshes, built (and kept for the runs) and checked against its case
+// before anything is written: a bad mesh file in row 7 is found before row 1 runs.
+// A failure to mesh valid geometry is left to that row's run, which records it.
+void check_row_meshes(const std::vector<SweepRow>& rows, SetupCache& cache, const std::string& rows_csv) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    try {
+      cache.structure_mesh(rows[i].c);
+      if (rows[i].c.fluid) cache.fluid_mesh(rows[i].c);
+    } catch (const InputError& e) {
+      throw InputError(rows_csv + ": row " + std::to_string(i + 1) + ": " + e.what());
+    } catch (const SolverFailure&) {
+    }
+  }
+}
+
+// The sweep's own summary.json: what was run and how each row ended.
+Json sweep_summary(const std::string& case_path, const std::string& rows_csv, const std::vector<SweepRow>& rows,
+                   const SweepResult& r, const char* status) {
+  Json j = {{"problem", "sweep"}, {"case", case_path}, {"rows_file", rows_csv}, {"status", status}};
+  j["rows"] = rows.size();
+  j["converged"] = r.converged;
+  j["not_converged"] = r.not_converged;
+  j["failed"] = r.failed;
+  Json statuses = Json::array();
+  for (const auto& row : rows) statuses.push_back(row.status);
+  j["row_status"] = statuses;
+  return j;
+}
+
+// The sweep's directory before the first row: created, marked "writing", cleared of
+// an earlier sweep's tables and of rows beyond this sweep's count.
+void begin_sweep_dir(const std::string& out_dir, std::size_t rows, const Json& header) {
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw OutputError(out_dir, ec.value());
+  write_json((fs::path(out_dir) / "summary.json").string(), header);
+  remove_stale_outputs(out_dir, "summary.json");
+  for (fs::directory_iterator it(out_dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    int number = 0;
+    char rest = 0;
+    if (std::sscanf(name.c_str(), "row-%d%c", &number, &rest) == 1 && number > static_cast<int>(rows) &&
+        it->is_directory(ec)) {
+      remove_stale_outputs(it->path().string());
+      fs::remove(it->path(), ec);  // only if now empty: a user's own files stay
+    }
+  }
+}
+
+std::string status_of(const RunResult& r, SweepResult& result) {
+  std::string status;
+  if (r.exit_status == 1) status = "failed: " + r.failure, ++result.failed;
+  else if (r.exit_status > 128) status = "interrupted", result.interrupted_by = r.exit_status - 128;
+  else if (r.exit_status == 3) status = "not converged", ++result.not_converged;
+  else status = "converged", ++result.converged;
+  if (r.summary.contains("convergence_warning")) status += ", unsettled (see its history.csv)";
+  return status;
 }
 
 }  // namespace
 
-CsvTable read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": no such rows file");
-  CsvTable t;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (trim(line).empty() || trim(line)[0] == '#') continue;
-    std::vector<std::string> cells = split_csv_line(line);
-    if (t.header.empty()) {
-      t.header = cells;
-      continue;
-    }
-    if (cells.size() != t.header.size())
-      throw InputError(path + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
-                       " cells; allowed: " + std::to_string(t.header.size()) + " (one per header column)");
-    t.rows.push_back(cells);
-  }
-  if (t.header.empty()) throw InputError(path + ": empty rows file; allowed: a header line and rows");
-  return t;
+int SweepResult::exit_status() const {
+  if (interrupted_by) return 128 + interrupted_by;
+  if (failed) return 1;
+  return not_converged ? 3 : 0;
 }
 
 SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv, const SweepOptions& options) {
   const CsvTable csv = read_csv(rows_csv);
+  check_header(csv, rows_csv);
   const Case base = load_case(case_path, options.overrides);
   SweepResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-sweep" : options.out_dir;
+  check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
+  std::vector<SweepRow> rows = read_rows(case_path, csv, rows_csv, options, result.out_dir);
+  SetupCache cache;
+  check_row_meshes(rows, cache, rows_csv);
 
-  // Validate every row before writing anything.
-  std::vector<Row> rows;
-  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
-    Row row;
-    std::vector<std::string> sets = options.overrides;
-    for (std::size_t j = 0; j < csv.header.size(); ++j) {
-      const std::string& key = csv.header[j];
-      const std::string& value = csv.rows[i][j];
-      if (key.rfind("paper.", 0) == 0) {
-        row.paper[key.substr(6)] = value;
-      } else if (key == "label") {
-        row.paper["label"] = value;
-      } else if (!value.empty()) {
-        sets.push_back(key + "=" + value);
-        row.settings.push_back(key + "=" + value);
-      }
-    }
-    char dir[32];
-    std::snprintf(dir, sizeof dir, "/row-%02zu", i + 1);
-    sets.push_back("output.dir=\"" + result.out_dir + dir + "\"");
-    if (!options.keep_outputs) sets.insert(sets.end(), {"output.png=false", "output.vtu=false"});
-    try {
-      row.c = load_case(case_path, sets);
-    } catch (const InputError& e) {
-      throw InputError(rows_csv + ": row " + std::to_string(i + 1) + ": " + e.what());
-    }
-    rows.push_back(std::move(row));
-  }
-  prepare_output_dir(result.out_dir, rows_csv);
-
-  // Run rows grouped by fluid mesh (so each mesh and its setup is built once),
-  // report them in the file's order.
+  // Nothing was written so far. Rows run grouped by fluid mesh (each mesh and its
+  // setup built once) and are reported in the file's order.
+  begin_sweep_dir(result.out_dir, rows.size(), sweep_summary(case_path, rows_csv, rows, result, "writing"));
   std::vector<std::size_t> order(rows.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -117,86 +165,29 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
     const std::string kb = rows[b].c.fluid ? fluid_mesh_key(rows[b].c) : "";
     return ka < kb;
   });
-  SetupCache cache;
-  std::vector<Json> summaries(rows.size());
-  std::vector<std::string> statuses(rows.size());
-  std::vector<double> walls(rows.size(), NAN);
-  std::fill(statuses.begin(), statuses.end(), "not run (interrupted)");
   for (std::size_t i : order) {
     if (interrupt_requested()) {
-      result.interrupted = true;
+      result.interrupted_by = interrupt_signal();
       break;
     }
-    const Case& c = rows[i].c;
     const Stopwatch clock;
-    std::string status = "converged";
-    try {
-      RunOptions run_options;
-      run_options.cache = &cache;
-      if (options.progress)
-        run_options.progress = [&, i](const std::string& l) { options.progress("[row " + std::to_string(i + 1) + "] " + l); };
-      const RunResult r = run_case(c, run_options);
-      summaries[i] = r.summary;
-      if (r.exit_status == kInterruptedExitStatus) status = "interrupted", result.interrupted = true;
-      else if (r.exit_status == 3) status = "not converged", ++result.not_converged;
-      else ++result.converged;
-      if (r.summary.contains("convergence_warning")) status += ", unsettled (see its history.csv)";
-      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + r.report);
-    } catch (const SolverFailure& e) {
-      status = std::string("failed: ") + e.what();
-      ++result.failed;
-      if (options.progress) options.progress("[row " + std::to_string(i + 1) + "] " + status);
-    }
+    RunOptions run_options;
+    run_options.cache = &cache;
+    const std::string prefix = "[row " + std::to_string(i + 1) + "] ";
+    if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
+    const RunResult r = run_case(rows[i].c, run_options);
+    rows[i].summary = r.summary;
+    rows[i].status = status_of(r, result);
+    rows[i].wall_s = clock.elapsed();
     ++result.rows;
-    statuses[i] = status;
-    walls[i] = clock.elapsed();
+    if (options.progress) options.progress(prefix + (r.exit_status == 1 ? rows[i].status : r.report));
   }
 
-  std::ostringstream md, csv_out;
-  md << "| row | eps | omega | hF | hS | k | paper k | last increment | paper | ‖v‖_{0,Ω_S^u} | paper "
-        "| ‖v‖/ε | paper | max \\|u\\| (m) | contact X1 (m) | fluid / structure triangles | wall (s) | "
-        "status |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv_out << "row,eps,omega,hF,hS,scheme,chi,k,paper_k,iterations,final_increment_l2,paper_increment,"
-             "v_l2_in_structure,paper_v_norm,v_over_eps,paper_v_over_eps,max_displacement,contact_x_min,"
-             "contact_x_max,fluid_triangles,structure_triangles,wall_s,fluid_s,status\n";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row& row = rows[i];
-    const Case& c = row.c;
-    const Json& s = summaries[i];
-    const std::string& status = statuses[i];
-    const double wall = walls[i];
-    auto num = [&](const char* key) { return s.contains(key) ? s[key].get<double>() : NAN; };
-    auto paper = [&](const char* key) {
-      auto it = row.paper.find(key);
-      return it == row.paper.end() ? std::string("") : it->second;
-    };
-    const bool has = !s.is_null();
-    const double k = has && c.fluid && s.contains("paper_k") ? s["paper_k"].get<double>() : NAN;
-    const double x_min = has && s.contains("contact") && !s["contact"]["x_min"].is_null() ? s["contact"]["x_min"].get<double>() : NAN;
-    const double x_max = has && s.contains("contact") && !s["contact"]["x_max"].is_null() ? s["contact"]["x_max"].get<double>() : NAN;
-    const int ft = has && s["mesh"].contains("fluid") ? s["mesh"]["fluid"]["triangles"].get<int>() : 0;
-    const int st = has ? s["mesh"]["structure"]["triangles"].get<int>() : 0;
-    const double fluid_s = has ? s["timing_s"]["fluid"].get<double>() : NAN;
-    const double hF = c.fluid ? c.fluid->h : NAN;
-    md << "| " << i + 1 << " | " << fmt(c.coupling.eps) << " | " << fmt(c.coupling.omega) << " | " << fmt(hF)
-       << " | " << fmt(c.structure.h) << " | " << fmt(k) << " | " << paper("k") << " | "
-       << fmt(num("final_increment_l2")) << " | " << paper("increment") << " | "
-       << fmt(num("fluid_velocity_l2_in_structure")) << " | " << paper("v_norm") << " | "
-       << fmt(num("fluid_velocity_l2_in_structure_over_eps")) << " | " << paper("v_over_eps") << " | "
-       << fmt(num("max_displacement"), 4) << " | " << fmt(x_min, 4) << "–" << fmt(x_max, 4) << " | " << ft
-       << " / " << st << " | " << fmt(wall, 3) << " | " << status << " |\n";
-    csv_out << std::setprecision(10) << i + 1 << ',' << c.coupling.eps << ',' << c.coupling.omega << ',' << hF
-            << ',' << c.structure.h << ',' << c.coupling.scheme << ',' << (c.fluid ? c.fluid->chi : std::string()) << ',' << k << ',' << paper("k") << ','
-            << (has ? s["iterations"].get<int>() : 0) << ',' << num("final_increment_l2") << ','
-            << paper("increment") << ',' << num("fluid_velocity_l2_in_structure") << ',' << paper("v_norm")
-            << ',' << num("fluid_velocity_l2_in_structure_over_eps") << ',' << paper("v_over_eps") << ','
-            << num("max_displacement") << ',' << x_min << ',' << x_max << ',' << ft << ',' << st << ','
-            << wall << ',' << fluid_s << ',' << '"' << status << '"' << '\n';
-  }
-  namespace fs = std::filesystem;
-  write_atomically((fs::path(result.out_dir) / "table.md").string(), [&](std::ostream& o) { o << md.str(); });
-  write_atomically((fs::path(result.out_dir) / "table.csv").string(), [&](std::ostream& o) { o << csv_out.str(); });
-  result.table_markdown = md.str();
+  result.table_markdown = sweep_table_markdown(rows);
+  write_atomically((fs::path(result.out_dir) / "table.md").string(), [&](std::ostream& o) { o << result.table_markdown; });
+  write_atomically((fs::path(result.out_dir) / "table.csv").string(), [&](std::ostream& o) { o << sweep_table_csv(rows); });
+  write_json((fs::path(result.out_dir) / "summary.json").string(),
+             sweep_summary(case_path, rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete"));
   return result;
 }
 

@@ -1,7 +1,9 @@
 // fsicontact sweep: one run per row of a CSV whose column headers are case keys
-// (section.key); columns "paper.*" are reference values shown beside ours (SPEC §8).
+// (section.key); columns "paper.*" are reference values shown beside ours, "label"
+// names a row (SPEC §8).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,19 +20,18 @@ struct SweepOptions {
 
 struct SweepResult {
   int rows = 0, converged = 0, not_converged = 0, failed = 0;
-  bool interrupted = false;  // Ctrl-C: the table holds the rows run so far
+  int interrupted_by = 0;  // the signal that stopped the sweep (0: none); the tables hold the rows run
   std::string out_dir;
   std::string table_markdown;
+  // 128 + signal if interrupted; else 1 if a row failed; else 3 if a row reached its
+  // iteration limit; else 0 (README, "Exit status").
+  int exit_status() const;
 };
 
-// Validates every row first (InputError, nothing written), then runs them in order.
+// Validates everything first: the CSV (headers known, no duplicate, at least one
+// row), every row's case, the output directory and every row's meshes (InputError
+// naming the file and row: nothing written). Then runs the rows, each writing its
+// own directory row-NN, and writes table.md, table.csv and the sweep's summary.json.
 SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv, const SweepOptions& options);
-
-// A CSV file as header + rows of cells (commas, optional double quotes, # comments).
-struct CsvTable {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-CsvTable read_csv(const std::string& path);
 
 }  // namespace fsi

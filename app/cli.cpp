@@ -1,0 +1,97 @@
+#include "cli.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include "common/errors.hpp"
+#include "common/interrupt.hpp"
+#include "io/case.hpp"
+#include "run/run_case.hpp"
+#include "run/sweep.hpp"
+
+namespace fsi {
+namespace {
+
+struct Streams {
+  std::ostream& out;
+  std::ostream& err;
+};
+
+int run_command(const std::string& case_path, const std::vector<std::string>& sets, const std::string& out_dir,
+                bool quiet, Streams io) {
+  const Case c = load_case(case_path, sets, out_dir);  // --out taken verbatim, never parsed
+  RunOptions options;
+  if (!quiet) options.progress = [&io](const std::string& line) { io.err << line << '\n'; };
+  const RunResult r = run_case(c, options);
+  if (!r.report.empty()) io.out << r.report << std::endl;  // the numbers, even after a failure
+  if (r.exit_status == 1) io.err << "fsicontact: failed: " << r.failure << std::endl;
+  return r.exit_status;
+}
+
+int sweep_command(const std::string& case_path, const std::string& rows, const std::vector<std::string>& sets,
+                  const std::string& out_dir, bool keep_outputs, bool quiet, Streams io) {
+  SweepOptions options;
+  options.overrides = sets;
+  options.out_dir = out_dir;
+  options.keep_outputs = keep_outputs;
+  if (!quiet) options.progress = [&io](const std::string& line) { io.err << line << '\n'; };
+  const SweepResult r = run_sweep(case_path, rows, options);
+  io.out << r.table_markdown << '\n'
+         << r.rows << " rows: " << r.converged << " converged, " << r.not_converged
+         << " reached the iteration limit, " << r.failed << " failed"
+         << (r.interrupted_by ? "; interrupted, the tables hold the rows run so far" : "") << ". Tables in "
+         << r.out_dir << "/ (table.md, table.csv, summary.json; one directory per row)." << std::endl;
+  return r.exit_status();
+}
+
+}  // namespace
+
+int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{"fsicontact: fluid-structure interaction with contact against a rigid obstacle (Murea 2017)"};
+  app.require_subcommand(0, 1);
+  std::string case_path, out_dir;
+  std::vector<std::string> sets;
+  bool quiet = false;
+  CLI::App* run = app.add_subcommand("run", "run one case (default: the paper's section 7.2 case)");
+  run->add_option("case", case_path, "case file (TOML); omit for the paper's section 7.2 case");
+  run->add_option("--set", sets, "override a case key: section.key=value")->type_name("KEY=VALUE");
+  run->add_option("--out", out_dir, "output directory (overrides output.dir; taken as it is)");
+  run->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  std::string sweep_case, sweep_rows;
+  bool keep_outputs = false;
+  CLI::App* sweep = app.add_subcommand("sweep", "run one case per row of a CSV file (e.g. the paper's Table 1)");
+  sweep->add_option("case", sweep_case, "base case file (TOML)")->required();
+  sweep->add_option("rows", sweep_rows, "CSV: headers are section.key overrides; paper.* columns are references")->required();
+  sweep->add_option("--set", sets, "override a key in every row: section.key=value")->type_name("KEY=VALUE");
+  sweep->add_option("--out", out_dir, "output directory (default out/<name>-sweep)");
+  sweep->add_flag("--keep-outputs", keep_outputs, "write each row's .vtu and .png too");
+  sweep->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e, out, err) == 0 ? 0 : 2;
+  }
+  if (app.get_subcommands().empty()) {
+    err << app.help();
+    return 2;
+  }
+  install_interrupt_handler();
+  const Streams io{out, err};
+  try {
+    if (sweep->parsed()) return sweep_command(sweep_case, sweep_rows, sets, out_dir, keep_outputs, quiet, io);
+    return run_command(case_path, sets, out_dir, quiet, io);
+  } catch (const InputError& e) {
+    err << "fsicontact: error: " << e.what() << std::endl;
+    return 2;
+  } catch (const SolverFailure& e) {
+    err << "fsicontact: failed: " << e.what() << std::endl;
+    return 1;
+  } catch (const OutputError& e) {
+    err << "fsicontact: failed: " << e.what() << std::endl;
+    return 1;
+  } catch (const std::bad_alloc&) {
+    err << "fsicontact: failed: out of memory" << std::endl;
+    return 1;
+  }
+}
+
+}  // namespace fsi

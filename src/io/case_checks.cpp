@@ -1,0 +1,147 @@
+// The checks that involve several keys: the geometry must be meshable at the sizes
+// asked for, the problem must fit the stated limits, and the loads must give
+// numbers a double can hold. Each names the key to change and the allowed range.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "io/case.hpp"
+#include "io/case_reader.hpp"
+
+namespace fsi::case_detail {
+namespace {
+
+// Strains above this are not small by any reading, and far below any overflow
+// (displacements scale as strain · diam · (L/H)², inside 1e±30 · 1e6 · 1e10).
+constexpr double kMaxStrainScale = 1e6;
+
+// Distance from a point to the rectangle [0,L]×[0,H].
+double distance_to_rectangle(double x, double y, double L, double H) {
+  const double dx = std::max({0.0 - x, 0.0, x - L}), dy = std::max({0.0 - y, 0.0, y - H});
+  return std::hypot(dx, dy);
+}
+
+// The ends of Γ_C split the bottom side; Gmsh does not refine next to a short piece,
+// so it leaves a sliver whose smallest angle falls with the piece's length d
+// (measured, hS = 1.5e-3: 6.8° at d = hS/10, 0.69° at hS/100, 0 at 1.5e-12, and
+// 6e-16 gave a zero-area triangle). A twentieth of hS keeps every angle above ~3°.
+void check_contact_zone(const Case& c, const Origin& o) {
+  const auto& s = c.structure;
+  const auto& ob = c.obstacle;
+  const double piece = s.h / 20;
+  const std::string zone = "Gamma_C = (" + approx(ob.xc_min(), 6) + ", " + approx(ob.xc_max(), 6) + ")";
+  if (!(ob.xc_min() >= piece))
+    fail(o, "obstacle.x0", "puts " + zone + " only " + approx(ob.xc_min()) + " from the structure's clamped end x = 0",
+         "x0 - gamma*r >= structure.h/20 = " + approx(piece) + " (" + o.value("structure.h", s.h, "obstacle.x0") +
+             "), or a smaller structure.h");
+  if (!(s.L - ob.xc_max() >= piece))
+    fail(o, "obstacle.x0", "puts " + zone + " only " + approx(s.L - ob.xc_max()) + " from the structure's end x = L",
+         "x0 + gamma*r <= structure.L - structure.h/20 = " + approx(s.L - piece, 6) + " (" +
+             o.value("structure.L", s.L, "obstacle.x0") + ", " + o.value("structure.h", s.h, "obstacle.x0") +
+             "), or a smaller structure.h");
+}
+
+void check_structure_mesh_size(const Case& c, const Origin& o) {
+  const auto& s = c.structure;
+  if (!(s.h <= s.L / 2))
+    fail(o, "structure.h", "= " + shortest(s.h) + " is more than half the structure's length",
+         "(0, structure.L/2 = " + shortest(s.L / 2) + "] (" + o.value("structure.L", s.L, "structure.h") + ")");
+  // Triangles ten times longer than thick still have angles of ~6°; beyond, Gmsh
+  // fails outright (H = 1e-12 with hS = 1.35e-3 aborted inside its meshing).
+  if (!(s.h <= 10 * s.H))
+    fail(o, "structure.h", "= " + shortest(s.h) + " is more than ten times the structure's thickness",
+         "(0, 10 * structure.H = " + shortest(10 * s.H) + "] (" + o.value("structure.H", s.H, "structure.h") + ")");
+  const double estimate = std::max(2.4 * s.L * s.H / (s.h * s.h), 2.0 * s.L / s.h);
+  if (estimate > kMaxStructureTriangles)
+    fail(o, "structure.h", "= " + shortest(s.h) + " would need about " + approx(estimate) +
+                               " triangles for structure.L x structure.H = " + shortest(s.L) + " x " + shortest(s.H) +
+                               ", above the limit of " + shortest(kMaxStructureTriangles),
+         ">= " + approx(std::sqrt(2.4 * s.L * s.H / kMaxStructureTriangles)) + " for this structure");
+}
+
+void check_rectangle_against_obstacle(const Case& c, const Origin& o) {
+  const auto& s = c.structure;
+  const auto& ob = c.obstacle;
+  if (distance_to_rectangle(ob.x0, ob.y0, s.L, s.H) < ob.r || ob.y0 + ob.r > 0)
+    fail(o, "obstacle.y0", "= " + shortest(ob.y0) + " puts the structure inside the obstacle at rest",
+         "y0 + r <= 0 (the disk's top below the structure's bottom y = 0)");
+}
+
+// The loads' strain scale (|f_S|·diam + |h_N|)/E: linear elasticity means ≪ 1.
+void check_strain(const Case& c, const Origin& o) {
+  const auto& s = c.structure;
+  const double diam = std::hypot(s.L, s.H);
+  const double strain = (s.f.norm() * diam + s.h_N.norm()) / s.E;
+  if (!(strain <= kMaxStrainScale))
+    fail(o, "structure.E", "= " + shortest(s.E) + " is too soft for the loads: they strain the structure by about " +
+                               approx(strain) + " ((|structure.f| * diam + |structure.h_N|) / E)",
+         "a strain scale <= " + shortest(kMaxStrainScale) + ": a larger structure.E or smaller loads");
+  if (!c.fluid) return;
+  const auto& f = *c.fluid;
+  // The fluid's stresses on the structure: viscous (μ Vmax / hF) and its weight.
+  const double fluid_strain = (f.mu * std::abs(f.Vmax) / f.h + f.f.norm() * diam) / s.E;
+  if (!(fluid_strain <= kMaxStrainScale))
+    fail(o, "structure.E", "= " + shortest(s.E) + " is too soft for the fluid's stresses: they strain the structure by about " +
+                               approx(fluid_strain) + " ((fluid.mu * |fluid.Vmax| / fluid.h + |fluid.f| * diam) / E)",
+         "a strain scale <= " + shortest(kMaxStrainScale) + ": a larger structure.E, or smaller fluid loads");
+}
+
+// The generated box: the disk inside it with room for a triangle between it and
+// every side (a gap below half of hF leaves slivers), at most the stated size.
+void check_fluid_box(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  const auto& ob = c.obstacle;
+  if (!(f.h <= ob.r))
+    fail(o, "fluid.h", "= " + shortest(f.h) + " is larger than the obstacle's radius (the circle needs six segments)",
+         "(0, obstacle.r = " + shortest(ob.r) + "] (" + o.value("obstacle.r", ob.r, "fluid.h") + ")");
+  const double gap = f.h / 2;
+  const struct {
+    const char* side;
+    double distance;
+  } sides[] = {{"left side x = 0", ob.x0 - ob.r},
+               {"right side x = fluid.L1", f.L1 - (ob.x0 + ob.r)},
+               {"bottom y = -fluid.H2", (ob.y0 - ob.r) + f.H2},
+               {"top y = fluid.H1", f.H1 - (ob.y0 + ob.r)}};
+  for (const auto& side : sides)
+    if (!(side.distance >= gap))
+      fail(o, "obstacle.r", "= " + shortest(ob.r) + " at (" + shortest(ob.x0) + ", " + shortest(ob.y0) +
+                                ") leaves " + approx(side.distance) + " to the fluid box's " + side.side,
+           "the disk inside (0, L1) x (-H2, H1) = (0, " + shortest(f.L1) + ") x (" + shortest(-f.H2) + ", " +
+               shortest(f.H1) + ") at least fluid.h/2 = " + approx(gap) + " from every side");
+  const double area = f.L1 * (f.H1 + f.H2) - std::numbers::pi * ob.r * ob.r;
+  const double estimate = 2.4 * area / (f.h * f.h);
+  if (estimate > kMaxFluidTriangles)
+    fail(o, "fluid.h", "= " + shortest(f.h) + " would need about " + approx(estimate) +
+                           " triangles, above the limit of " + shortest(kMaxFluidTriangles),
+         ">= " + approx(std::sqrt(2.4 * area / kMaxFluidTriangles)) + " for this box");
+}
+
+// The structure at rest inside the fluid box (its clamped side on Σ1).
+void check_structure_in_box(const Case& c, const Origin& o) {
+  const auto& s = c.structure;
+  const auto& f = *c.fluid;
+  if (!(s.L < f.L1))
+    fail(o, "structure.L", "= " + shortest(s.L) + " does not fit in the fluid box",
+         "< fluid.L1 = " + shortest(f.L1) + " (" + o.value("fluid.L1", f.L1, "structure.L") + ")");
+  if (!(s.H < f.H1))
+    fail(o, "structure.H", "= " + shortest(s.H) + " does not fit in the fluid box",
+         "< fluid.H1 = " + shortest(f.H1) + " (" + o.value("fluid.H1", f.H1, "structure.H") + ")");
+}
+
+}  // namespace
+
+void check_case(const Case& c, const Origin& origin) {
+  // With a mesh file the structure's geometry is the mesh's, checked when it is read
+  // (run/structure_setup.cpp): L and H must then equal its extent.
+  if (c.structure.mesh.empty()) {
+    check_structure_mesh_size(c, origin);
+    check_contact_zone(c, origin);
+    check_rectangle_against_obstacle(c, origin);
+  }
+  check_strain(c, origin);
+  if (!c.fluid) return;
+  check_structure_in_box(c, origin);
+  if (c.fluid->mesh.empty()) check_fluid_box(c, origin);
+}
+
+}  // namespace fsi::case_detail

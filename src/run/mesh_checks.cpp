@@ -1,0 +1,180 @@
+#include "run/mesh_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "solid/obstacle.hpp"
+
+namespace fsi {
+namespace {
+
+// Coordinates of two descriptions of one point agree to this fraction of the
+// domain's size: files written with 10 significant digits pass, a wrong key fails.
+constexpr double kRelativeTolerance = 1e-8;
+
+std::string at(const Point& p) {
+  std::string text = "(";  // built step by step: "(" + std::string trips GCC 12's -Wrestrict
+  text += shortest(p.x());
+  text += ", ";
+  text += shortest(p.y());
+  return text + ")";
+}
+
+struct Box {
+  Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+};
+
+Box bounding_box(const Mesh& mesh) {
+  Box b;
+  for (const Point& p : mesh.vertices) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  return b;
+}
+
+// "<case>: <key> = <value> contradicts <what> <file>: <detail>; allowed: <allowed>"
+[[noreturn]] void contradiction(const Case& c, const std::string& key, double value, const std::string& what,
+                                const std::string& file, const std::string& detail, const std::string& allowed) {
+  throw InputError(c.source + ": " + key + " = " + shortest(value) + " contradicts " + what + " " + file + ": " +
+                   detail + "; allowed: " + allowed);
+}
+
+void check_labelled(const Case& c, const Mesh& mesh, const std::string& what) {
+  const auto [a, b] = unlabelled_boundary_edge(mesh);
+  if (a >= 0)
+    throw InputError(c.source + ": " + what + ": the boundary edge " + at(mesh.vertices[a]) + " - " +
+                     at(mesh.vertices[b]) + " belongs to no boundary part; allowed: every boundary edge in one "
+                     "physical curve (its condition would be silently traction-free)");
+}
+
+void check_extent(const Case& c, const Mesh& mesh) {
+  const Box b = bounding_box(mesh);
+  const auto& s = c.structure;
+  const double tol = kRelativeTolerance * std::hypot(s.L, s.H);
+  const std::string file = s.mesh;
+  if (std::abs(b.lo.x()) > tol || std::abs(b.lo.y()) > tol)
+    throw InputError(c.source + ": structure.mesh " + file + " starts at " + at(b.lo) +
+                     "; allowed: the reference configuration (0, L) x (0, H), its lower left corner at (0, 0)");
+  if (std::abs(b.hi.x() - s.L) > tol)
+    contradiction(c, "structure.L", s.L, "structure.mesh", file, "its vertices reach x = " + shortest(b.hi.x()),
+                  "structure.L = " + shortest(b.hi.x()) + ", the mesh's length");
+  if (std::abs(b.hi.y() - s.H) > tol)
+    contradiction(c, "structure.H", s.H, "structure.mesh", file, "its vertices reach y = " + shortest(b.hi.y()),
+                  "structure.H = " + shortest(b.hi.y()) + ", the mesh's thickness");
+}
+
+void check_contact_zone(const Case& c, const Mesh& mesh, const std::string& what) {
+  const auto& o = c.obstacle;
+  const DiskFoundation psi(o.x0, o.y0, o.r);
+  const std::vector<int> zone = mesh.vertices_on(mesh.label("Gamma_C"));
+  for (int v : zone)
+    if (!psi.defined_at(mesh.vertices[v].x()))
+      throw InputError(c.source + ": " + what + ": Gamma_C reaches x = " + shortest(mesh.vertices[v].x()) +
+                       ", outside the obstacle's span; allowed: (x0 - r, x0 + r) = (" + shortest(o.x0 - o.r) + ", " +
+                       shortest(o.x0 + o.r) + ")");
+  // One contact row per vertex strictly inside Γ_C (SPEC §2): its ends are the
+  // vertices of Γ_C met by one Γ_C edge only.
+  std::map<int, int> uses;
+  for (const auto& e : mesh.edges_on(mesh.label("Gamma_C"))) ++uses[e.v[0]], ++uses[e.v[1]];
+  const bool interior = std::any_of(uses.begin(), uses.end(), [](const auto& u) { return u.second >= 2; });
+  if (!interior)
+    throw InputError(c.source + ": " + what + ": Gamma_C has no vertex strictly inside it, so no contact can be "
+                     "imposed; allowed: Gamma_C longer than the mesh size (2 * obstacle.gamma * obstacle.r = " +
+                     shortest(2 * o.gamma * o.r) + " > structure.h = " + shortest(c.structure.h) + ")");
+}
+
+void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {
+  const auto& o = c.obstacle;
+  for (const Point& X : mesh.vertices)
+    if ((X - Point(o.x0, o.y0)).norm() < o.r)
+      throw InputError(c.source + ": " + what + ": the structure starts inside the obstacle (vertex " + at(X) +
+                       "); allowed: every vertex outside the disk");
+}
+
+void check_inside_box(const Case& c, const Mesh& mesh, const std::string& what) {
+  const auto& f = *c.fluid;
+  const Box b = bounding_box(mesh);
+  const double tol = kRelativeTolerance * std::hypot(f.L1, f.H1 + f.H2);
+  if (b.lo.x() < -tol || b.hi.x() > f.L1 + tol || b.lo.y() < -f.H2 - tol || b.hi.y() > f.H1 + tol)
+    throw InputError(c.source + ": " + what + ": the structure spans " + at(b.lo) + " - " + at(b.hi) +
+                     ", outside the fluid box (0, fluid.L1) x (-fluid.H2, fluid.H1) = (0, " + shortest(f.L1) +
+                     ") x (" + shortest(-f.H2) + ", " + shortest(f.H1) + "); allowed: a structure inside the box");
+}
+
+}  // namespace
+
+std::array<int, 2> unlabelled_boundary_edge(const Mesh& mesh) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  for (const auto& e : mesh.boundary_edges) uses.erase(std::minmax(e.v[0], e.v[1]));
+  for (const auto& [edge, n] : uses)
+    if (n == 1) return {edge.first, edge.second};
+  return {-1, -1};
+}
+
+void check_structure_mesh(const Case& c, const Mesh& mesh) {
+  const std::string what = c.structure.mesh.empty() ? "the generated structure mesh" : "structure.mesh " + c.structure.mesh;
+  if (!c.structure.mesh.empty()) {
+    check_extent(c, mesh);
+    check_labelled(c, mesh, what);
+  }
+  check_contact_zone(c, mesh, what);
+  check_outside_disk(c, mesh, what);
+  if (c.fluid) check_inside_box(c, mesh, what);
+}
+
+void check_fluid_mesh(const Case& c, const Mesh& mesh) {
+  const auto& f = *c.fluid;
+  const auto& o = c.obstacle;
+  const std::string file = f.mesh;
+  const double tol = kRelativeTolerance * std::hypot(f.L1, f.H1 + f.H2);
+  const Box b = bounding_box(mesh);
+  if (std::abs(b.lo.x()) > tol)
+    throw InputError(c.source + ": fluid.mesh " + file + " starts at x = " + shortest(b.lo.x()) +
+                     "; allowed: the box (0, L1) x (-H2, H1), its left side Sigma_1 on x = 0");
+  if (std::abs(b.hi.x() - f.L1) > tol)
+    contradiction(c, "fluid.L1", f.L1, "fluid.mesh", file, "its vertices reach x = " + shortest(b.hi.x()),
+                  "fluid.L1 = " + shortest(b.hi.x()) + ", the mesh's");
+  if (std::abs(b.hi.y() - f.H1) > tol)
+    contradiction(c, "fluid.H1", f.H1, "fluid.mesh", file, "its vertices reach y = " + shortest(b.hi.y()),
+                  "fluid.H1 = " + shortest(b.hi.y()) + ", the mesh's");
+  if (std::abs(b.lo.y() + f.H2) > tol)
+    contradiction(c, "fluid.H2", f.H2, "fluid.mesh", file, "its vertices reach y = " + shortest(b.lo.y()),
+                  "fluid.H2 = " + shortest(-b.lo.y()) + ", the mesh's");
+  // Each side's label on that side: the inflow goes where Sigma_4 is.
+  const struct {
+    const char* label;
+    const char* side;
+    int axis;
+    double value;
+  } sides[] = {{"Sigma_1", "the left side x = 0", 0, 0.0},
+               {"Sigma_2", "the bottom y = -fluid.H2 (the outlet)", 1, -f.H2},
+               {"Sigma_3", "the right side x = fluid.L1", 0, f.L1},
+               {"Sigma_4", "the top y = fluid.H1 (the inflow)", 1, f.H1}};
+  for (const auto& side : sides)
+    for (int v : mesh.vertices_on(mesh.label(side.label)))
+      if (std::abs(mesh.vertices[v][side.axis] - side.value) > tol)
+        throw InputError(c.source + ": fluid.mesh " + file + ": " + side.label + " has the vertex " +
+                         at(mesh.vertices[v]) + ", not on " + side.side + "; allowed: " + side.label + " = " + side.side);
+  const Point centre(o.x0, o.y0);
+  for (int v : mesh.vertices_on(mesh.label("Sigma_5"))) {
+    const double d = (mesh.vertices[v] - centre).norm();
+    if (std::abs(d - o.r) > 1e-6 * o.r)
+      contradiction(c, "obstacle.r", o.r, "fluid.mesh", file,
+                    "its Sigma_5 vertex " + at(mesh.vertices[v]) + " lies " + shortest(d) + " from the centre (" +
+                        shortest(o.x0) + ", " + shortest(o.y0) + ")",
+                    "obstacle.x0, y0, r describing the hole Sigma_5 of the mesh");
+  }
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Point g = (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]]) / 3.0;
+    if ((g - centre).norm() < o.r * (1 - 1e-6))
+      throw InputError(c.source + ": fluid.mesh " + file + " covers the obstacle: its triangle at " + at(g) +
+                       " lies inside the disk; allowed: D = the box minus the disk (obstacle.x0, y0, r)");
+  }
+  check_labelled(c, mesh, "fluid.mesh " + file);
+}
+
+}  // namespace fsi

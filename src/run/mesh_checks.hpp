@@ -1,0 +1,28 @@
+// A mesh against the case it is used for: keys that contradict a given mesh, a
+// structure outside the fluid box or inside the obstacle, boundary parts on the wrong
+// side, an unlabelled boundary edge. Each is an input error (exit 2, nothing
+// written) naming the key, the mesh file and the defect.
+#pragma once
+
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+// The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
+// vertex strictly inside it (else no contact row exists), no vertex inside the
+// disk, every boundary edge labelled, inside the fluid box (FSI); a mesh file's
+// extent must equal structure.L × structure.H.
+void check_structure_mesh(const Case& c, const Mesh& mesh);
+
+// A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,
+// bottom, right and top sides (the inflow is applied on Σ4 whatever the
+// coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
+// edge labelled.
+void check_fluid_mesh(const Case& c, const Mesh& mesh);
+
+// The first boundary edge of the triangulation (used by one triangle) that carries
+// no label, as its two vertex indices; {-1, -1} if none.
+std::array<int, 2> unlabelled_boundary_edge(const Mesh& mesh);
+
+}  // namespace fsi
