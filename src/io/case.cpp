@@ -192,6 +192,11 @@ void check_name(const std::string& name, const Origin& origin) {
 
 const std::set<std::string> kSections = {"structure", "obstacle", "fluid", "coupling", "contact", "output", "name"};
 
+// ν → 0.5 makes λ/μ = 2ν/(1 − 2ν) grow without bound and A_S singular in double
+// precision: measured, the Cholesky factorisation failed at ν = 0.49999999999999
+// (λ/μ = 3.5e13) and held at 0.499999999999 (5e11). λ/μ ≤ 1e8 keeps a margin of 5000.
+constexpr double kMaxPoisson = 0.499999995;
+
 void read_structure(const toml::table& root, const Origin& origin, const std::string& case_path, Case& c,
                     std::vector<std::string>* known) {
   Section s(section_table(root, "structure", origin), "structure", origin, known);
@@ -199,7 +204,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.L = s.number("L", p.L, kSize);
   p.H = s.number("H", p.H, kSize);
   p.E = s.number("E", p.E, kSize);
-  p.nu = s.number("nu", p.nu, open(0, 0.5));
+  p.nu = s.number("nu", p.nu, left_open(0, kMaxPoisson));
   p.f = s.vector2("f", p.f);
   p.h_N = s.vector2("h_N", p.h_N);
   p.h = s.number("h", p.h, kSize);

@@ -149,10 +149,10 @@ void check_fluid_mesh(const Case& c, const Mesh& mesh) {
     const char* side;
     int axis;
     double value;
-  } sides[] = {{"Sigma_1", "the left side x = 0", 0, 0.0},
+  } sides[] = {{"Sigma_4", "the top y = fluid.H1 (the inflow)", 1, f.H1},
+               {"Sigma_1", "the left side x = 0", 0, 0.0},
                {"Sigma_2", "the bottom y = -fluid.H2 (the outlet)", 1, -f.H2},
-               {"Sigma_3", "the right side x = fluid.L1", 0, f.L1},
-               {"Sigma_4", "the top y = fluid.H1 (the inflow)", 1, f.H1}};
+               {"Sigma_3", "the right side x = fluid.L1", 0, f.L1}};
   for (const auto& side : sides)
     for (int v : mesh.vertices_on(mesh.label(side.label)))
       if (std::abs(mesh.vertices[v][side.axis] - side.value) > tol)

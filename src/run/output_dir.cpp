@@ -36,11 +36,13 @@ void RunOutputs::begin(Json header) {
   remove_stale_outputs(dir_, "summary.json");
 }
 
-void RunOutputs::write(const std::string& name, const std::function<void(const std::string& path)>& writer) {
+bool RunOutputs::write(const std::string& name, const std::function<void(const std::string& path)>& writer) {
   try {
     writer(path(name));
+    return true;
   } catch (const OutputError& e) {
     errors_.push_back(e.what());
+    return false;
   }
 }
 

@@ -30,8 +30,9 @@ class RunOutputs {
   // Creates the directory, writes summary.json = header + {"status": "writing"} and
   // removes stale outputs. Throws OutputError (path and strerror) if it cannot.
   void begin(Json header);
-  // Writes output `name` through writer(path); an OutputError is recorded, not thrown.
-  void write(const std::string& name, const std::function<void(const std::string& path)>& writer);
+  // Writes output `name` through writer(path); an OutputError is recorded, not
+  // thrown. False if it failed.
+  bool write(const std::string& name, const std::function<void(const std::string& path)>& writer);
   // Writes the final summary.json; after a failed write its status is "failed", with
   // the reason under "failure" (the solve's own status kept as "solve_status").
   // Throws OutputError if summary.json itself cannot be written. Returns what it wrote.

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/fault.hpp"
 #include "io/atomic_file.hpp"
 #include "run/output_dir.hpp"
 #include "run/run_case.hpp"
@@ -41,6 +42,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   {
     ScopedPhase phase(times, "mesh");
     mesh = make_structure_mesh(c);
+    fault_point("mesh");
   }
   const MeshStatistics stats = statistics(mesh);
 
@@ -49,7 +51,9 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   {
     ScopedPhase phase(times, "structure");
     s = make_structure(c, std::move(mesh), progress);
+    fault_point("structure");
     try {
+      fault_point("contact");
       solution = s.solver->solve(s.b_applied);
     } catch (const QpError& e) {
       throw SolverFailure(std::string("structure: contact QP failed: ") + e.what());

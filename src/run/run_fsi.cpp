@@ -6,6 +6,7 @@
 #include <iomanip>
 
 #include "common/errors.hpp"
+#include "common/fault.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "io/atomic_file.hpp"
@@ -183,16 +184,19 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
     ScopedPhase phase(times, "mesh");
     s_stats = statistics(cache.structure_mesh(c));
     f_stats = statistics(cache.fluid_mesh(c));
+    fault_point("mesh");
   }
   StructureSetup* s_ptr = nullptr;
   {
     ScopedPhase phase(times, "structure");
     s_ptr = &cache.structure(c);  // no QP progress lines: one per iteration would swamp stderr
+    fault_point("structure");
   }
   FluidSetup* f_ptr = nullptr;
   {
     ScopedPhase phase(times, "fluid");
     f_ptr = &cache.fluid(c);
+    fault_point("fluid");
   }
   StructureSetup& s = *s_ptr;
   FluidSetup& f = *f_ptr;
@@ -254,10 +258,13 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
     if (c.output.vtu && has_fluid) {
-      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, fluid, f.stokes->last_solution_chi()); });
+      const bool fluid_vtu =
+          out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, fluid, f.stokes->last_solution_chi()); });
       if (!fluid_only) {
-        out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
-        out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
+        const bool structure_vtu =
+            out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
+        if (fluid_vtu && structure_vtu)  // never a .pvd that names a missing file
+          out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
       }
     }
     if (c.output.png && has_fluid) {

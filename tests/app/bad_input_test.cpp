@@ -2,6 +2,8 @@
 // the file, the key and what is allowed; exit status 2; nothing written.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "support/cli.hpp"
 
 namespace fsi {
@@ -36,7 +38,15 @@ struct BadInput {
   std::string case_text;  // written to case.toml
   std::string extra_args;
   std::vector<std::string> expected;  // substrings of the message
+  std::vector<std::pair<std::string, std::string>> files = {};  // more files: name, text
 };
+
+std::string shipped(const std::string& name) {
+  return testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/cases/meshes/" + name);
+}
+
+// The §7.2 case on the shipped fluid mesh (hF = 0.02), copied as box.msh.
+const std::string kBoxCase = "[structure]\nh = 0.03\n[fluid]\nmesh = \"box.msh\"\n";
 
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
 
@@ -50,8 +60,9 @@ std::vector<BadInput> bad_inputs() {
       {"E_negative", replace(kValid, "E = 3.0e5", "E = -3e5"), "", {"structure.E", "[1e-30, 1e+30]"}},
       {"E_nan", replace(kValid, "E = 3.0e5", "E = nan"), "", {"structure.E", "finite"}},
       {"E_inf", replace(kValid, "E = 3.0e5", "E = inf"), "", {"structure.E", "finite"}},
-      {"nu_half", replace(kValid, "nu = 0.3", "nu = 0.5"), "", {"structure.nu", "(0, 0.5)"}},
-      {"nu_zero", replace(kValid, "nu = 0.3", "nu = 0"), "", {"structure.nu", "(0, 0.5)"}},
+      {"nu_half", replace(kValid, "nu = 0.3", "nu = 0.5"), "", {"structure.nu", "(0, 0.499999995]"}},
+      {"nu_zero", replace(kValid, "nu = 0.3", "nu = 0"), "", {"structure.nu", "(0, 0.499999995]"}},
+      {"nu_singular_in_double_precision", replace(kValid, "nu = 0.3", "nu = 0.49999999999999"), "", {"structure.nu", "(0, 0.499999995]"}},
       {"h_zero", replace(kValid, "h = 0.0014", "h = 0"), "", {"structure.h", "out of range"}},
       {"h_negative", replace(kValid, "h = 0.0014", "h = -0.001"), "", {"structure.h"}},
       {"h_too_small", replace(kValid, "h = 0.0014", "h = 1e-6"), "", {"structure.h", "triangles", "limit"}},
@@ -96,6 +107,36 @@ std::vector<BadInput> bad_inputs() {
       {"mesh_without_groups", replace(kValid, "h = 0.0014", "mesh = \"nogroups.msh\""), "", {"structure.mesh", "Gamma_D"}},
       {"output_not_writable", kValid + "[output]\ndir = \"/proc/fsicontact\"\n", "", {"output.dir", "/proc/fsicontact"}},
       {"out_not_writable", kValid, "--out /proc/fsicontact", {"output.dir", "/proc/fsicontact"}},
+      // Values that reached a library and took the process down (issue 11, class 1).
+      {"E_underflow", replace(kValid, "E = 3.0e5", "E = 1e-300"), "", {"structure.E", "[1e-30, 1e+30]"}},
+      {"E_too_soft_for_the_loads", replace(kValid, "E = 3.0e5", "E = 1e-20"), "", {"structure.E", "strain", "<= 1e+06"}},
+      {"E_underflow_into_ipopt", kValid, "--set structure.E=1e-300 --set contact.solver=ipopt", {"--set structure.E", "[1e-30, 1e+30]"}},
+      {"load_overflow", replace(kValid, "f = [0.0, -1.0e4]", "f = [0.0, -1e300]"), "", {"structure.f", "out of range", "0 or a magnitude in [1e-30, 1e+30]"}},
+      {"surface_load_overflow", kValid, "--set structure.h_N=[0,1e300]", {"--set structure.h_N", "out of range"}},
+      {"length_overflow", kValid, "--set structure.L=1e31", {"--set structure.L", "[1e-30, 1e+30]"}},
+      {"vmax_overflow", kValid + "[fluid]\nVmax = 1e31\n", "", {"fluid.Vmax", "0 or a magnitude"}},
+      {"thin_structure", kValid, "--set structure.H=1e-12", {"structure.h = 0.0014", "10 * structure.H", "from --set structure.H"}},
+      {"fluid_too_strong_for_the_structure", kValid + "[fluid]\nh = 0.004\n", "--set structure.E=1e-5 --set structure.f=[0,0]", {"structure.E", "fluid's stresses"}},
+      {"omega_just_above_one", kValid + "[fluid]\n", "--set coupling.omega=1.0000001", {"coupling.omega = 1.0000001 is out of range", "(0, 1]"}},
+      // Geometry that passed and then died in meshing (class 4).
+      {"gamma_c_a_rounding_error_from_the_end", replace(replace(kValid, "r = 0.005", "r = 0.00625"), "gamma = 0.8", "gamma = 0.79999999999999"), "", {"obstacle.x0", "Gamma_C", "structure.h/20", "from the structure's end"}},
+      {"gamma_c_at_the_clamped_end", replace(kValid, "x0 = 0.055", "x0 = 0.004"), "", {"obstacle.x0", "clamped end"}},
+      {"gamma_c_without_a_vertex_inside", kValid, "--set obstacle.gamma=0.1", {"Gamma_C has no vertex strictly inside", "structure.h"}},
+      // Output in the wrong place (class 5).
+      {"name_dot_dot", replace(kValid, "name = \"t\"", "name = \"..\""), "", {"case.toml: name", "not starting with '.'"}},
+      {"name_hidden", replace(kValid, "name = \"t\"", "name = \".t\""), "", {"name", "not starting with '.'"}},
+      {"name_too_long", replace(kValid, "name = \"t\"", "name = \"" + std::string(250, 'n') + "\""), "", {"name", "1 to 200"}},
+      {"out_a_tab_from_a_toml_escape", kValid + "[output]\ndir = \"C:\\temp\"\n", "", {"output.dir", "U+0009", "tab"}},
+      {"out_is_a_file", kValid, "--out case.toml", {"--out: output.dir = \"case.toml\" is a file"}},
+      {"out_through_a_file", kValid, "--out case.toml/sub", {"--out: output.dir", "not a directory"}},
+      {"out_component_too_long", kValid, "--out " + std::string(300, 'd'), {"output.dir", "component of 300 bytes"}},
+      // Keys that contradict a given mesh (class 7).
+      {"fluid_mesh_box_longer", kBoxCase, "--set fluid.L1=0.5", {"fluid.L1 = 0.5 contradicts fluid.mesh", "x = 0.41"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
+      {"fluid_mesh_box_taller", kBoxCase, "--set fluid.H1=0.6", {"fluid.H1 = 0.6 contradicts fluid.mesh"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
+      {"fluid_mesh_obstacle_elsewhere", kBoxCase, "--set obstacle.r=0.04", {"obstacle.r = 0.04 contradicts fluid.mesh", "Sigma_5"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
+      {"fluid_mesh_inflow_label_at_the_bottom", kBoxCase, "", {"fluid.mesh", "Sigma_4", "not on the top"},
+       {{"box.msh", replace(replace(replace(shipped("paper-7.2-box-h0.02.msh"), "1 2 \"Sigma_2\"", "1 2 \"Sigma_X\""), "1 4 \"Sigma_4\"", "1 4 \"Sigma_2\""), "1 2 \"Sigma_X\"", "1 2 \"Sigma_4\"")}}},
+      {"structure_mesh_longer_than_L", replace(replace(kValid, "h = 0.0014", "mesh = \"beam.msh\""), "L = 0.06", "L = 0.07"), "", {"structure.L = 0.07 contradicts structure.mesh", "0.06"}, {{"beam.msh", shipped("paper-7.1-beam.msh")}}},
   };
 }
 
@@ -111,6 +152,13 @@ TEST_P(BadInputTest, IsRejectedWithExitStatus2AndNothingWritten) {
                       "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n"
                       "0 0 0\n1 0 0\n0 1 0\n$EndNodes\n$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n"
                       "$EndElements\n");
+  for (const auto& [name, text] : b.files) testing::write_text(dir / name, text);
+  const auto listing = [&] {
+    std::set<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(e.path().string());
+    return names;
+  };
+  const std::set<std::string> before = listing();
   const std::string target = b.case_text.empty() ? "" : "case.toml";
   const bool own_out = b.extra_args.find("--out") != std::string::npos ||
                        b.case_text.find("[output]") != std::string::npos;
@@ -121,6 +169,7 @@ TEST_P(BadInputTest, IsRejectedWithExitStatus2AndNothingWritten) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_FALSE(fs::exists(dir / "result")) << "output written for invalid input";
+  EXPECT_EQ(listing(), before) << "a file or directory was created for invalid input";
   fs::remove_all(dir);
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/cli.hpp"
 
@@ -44,6 +45,21 @@ TEST(FsiRun, WritesEveryOutput) {
   const std::string history = testing::slurp(dir / "res/history.csv");
   EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), j["iterations"].get<int>() + 1);
   EXPECT_NE(testing::slurp(dir / "res/fsi.pvd").find("structure.vtu"), std::string::npos);
+  // timing_s adds each phase once: transfer is the force transfer alone (it used to
+  // count χ too, which has its own phase), as history.csv's columns sum.
+  std::istringstream lines(history);
+  std::string line;
+  std::getline(lines, line);
+  double chi = 0, transfer = 0;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    chi += std::stod(cells[6]);
+    transfer += std::stod(cells[8]);
+  }
+  EXPECT_NEAR(j["timing_s"]["transfer"].get<double>(), transfer, 1e-6);
+  EXPECT_NEAR(j["timing_s"]["chi"].get<double>(), chi, 1e-6);
   fs::remove_all(dir);
 }
 

@@ -2,12 +2,15 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fsi::testing {
 
@@ -54,6 +57,33 @@ inline CliRun run_cli(const std::string& args, const std::filesystem::path& cwd)
   command += "' ";
   command += args;
   return run_shell(command, cwd);
+}
+
+// Starts the binary with `args` (already split) in `cwd`, stdout and stderr to the
+// given files; returns its pid (for a signal and waitpid).
+inline pid_t spawn_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                       const std::filesystem::path& out, const std::filesystem::path& err) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(cwd.c_str()) != 0) ::_exit(126);
+    std::FILE* o = std::freopen(out.c_str(), "w", stdout);
+    std::FILE* e = std::freopen(err.c_str(), "w", stderr);
+    if (!o || !e) ::_exit(126);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(FSICONTACT_BINARY));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(FSICONTACT_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The exit status of a spawned run (128 + signal if it died by one).
+inline int wait_cli(pid_t pid) {
+  int raw = 0;
+  ::waitpid(pid, &raw, 0);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
 }
 
 inline void write_text(const std::filesystem::path& p, const std::string& text) {

@@ -1,0 +1,76 @@
+// Every case key reaches summary.json's parameters, and every key a setup reads is
+// in that setup's cache key (issue 11: fluid.factorization and keep_far_factors_mb
+// were in neither, so a sweep row could run with another row's solver).
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "common/format.hpp"
+#include "io/case.hpp"
+#include "run/fluid_setup.hpp"
+#include "run/setup_cache.hpp"
+#include "run/summary.hpp"
+
+namespace fsi {
+namespace {
+
+// A valid value different from the §7.2 default, for each key: numbers 1% larger.
+std::string other_value(const std::string& key) {
+  static const std::map<std::string, std::string> special = {
+      {"name", "other"},          {"structure.mesh", "m.msh"},       {"structure.f", "[1, -2]"},
+      {"structure.h_N", "[1, 2]"}, {"fluid.mesh", "b.msh"},          {"fluid.f", "[1, -2]"},
+      {"fluid.chi", "area-fraction"}, {"fluid.factorization", "whole"}, {"coupling.max_iterations", "7"},
+      {"coupling.scheme", "aitken"},  {"contact.solver", "ipopt"},    {"output.dir", "elsewhere"},
+      {"output.png", "false"},    {"output.vtu", "false"}};
+  auto it = special.find(key);
+  if (it != special.end()) return it->second;
+  const Json defaults = to_json(load_case(""));
+  const auto dot = key.find('.');
+  return shortest(1.01 * defaults[key.substr(0, dot)][key.substr(dot + 1)].get<double>());
+}
+
+TEST(SetupKeys, EveryCaseKeyIsInTheParameters) {
+  const Case base = load_case("");
+  const std::vector<std::string> keys = case_keys();
+  EXPECT_GE(keys.size(), 30u);
+  for (const std::string& key : keys) {
+    if (key == "name" || key == "output.dir") continue;  // a name renames; a dir moves
+    const Case c = load_case("", {key + "=" + other_value(key)});
+    EXPECT_NE(to_json(c).dump(), to_json(base).dump()) << key << " is missing from summary.json's parameters";
+  }
+}
+
+TEST(SetupKeys, EverySectionKeyAChangesItsSetupKey) {
+  const Case base = load_case("");
+  for (const std::string& key : case_keys()) {
+    const std::string section = key.substr(0, key.find('.'));
+    if (section == "coupling" || section == "output" || section == "name") continue;  // set per row, or no setup
+    const Case c = load_case("", {key + "=" + other_value(key)});
+    if (section == "fluid" || section == "obstacle")
+      EXPECT_NE(fluid_setup_key(c), fluid_setup_key(base)) << key;
+    if (section == "structure" || section == "obstacle" || section == "contact")
+      EXPECT_NE(structure_setup_key(c), structure_setup_key(base)) << key;
+  }
+}
+
+// The inflow belongs to the label Σ4, not to the line y = H1: on a mesh whose Σ4 is
+// not at the case's H1, it used to vanish silently (zero velocity, "converged").
+TEST(SetupKeys, TheInflowIsAppliedOnTheLabelSigma4) {
+  Mesh m;
+  m.vertices = {{0, 0}, {1, 0}, {0.5, 0.7}, {1, 0.7}, {0, 0.7}};
+  m.triangles = {{0, 1, 3}, {0, 3, 2}, {0, 2, 4}};
+  m.add_label("Sigma_1"), m.add_label("Sigma_3"), m.add_label("Sigma_5");
+  const int top = m.add_label("Sigma_4");
+  m.boundary_edges = {{{4, 2}, top}, {{2, 3}, top}};
+  FluidParams f;
+  f.L1 = 1.0;
+  f.H1 = 0.5;  // not where Σ4 is
+  f.Vmax = 2.0;
+  const FluidBoundaryConditions bc = paper_boundary_conditions(m, f);
+  ASSERT_EQ(bc.dirichlet_values.size(), 1u);
+  EXPECT_EQ(bc.dirichlet_values[0].first, top);
+  EXPECT_DOUBLE_EQ(bc.dirichlet_values[0].second(m.vertices[2]).y(), -2.0);  // Vmax·4x(x − L1)/L1² at x = 1/2
+}
+
+}  // namespace
+}  // namespace fsi
