@@ -250,7 +250,7 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   p.eps = s.number("eps", p.eps, {1e-12, kMaxMagnitude, true, true});
   p.omega = s.number("omega", p.omega, left_open(0, 1));
   p.tol = s.number("tol", p.tol, kSize);
-  p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, kMaxIterations);
+  p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, case_limits().max_iterations);
   p.scheme = s.choice("scheme", p.scheme, {"constant", "aitken", "iqn-ils"});
   s.reject_unknown();
 }
@@ -346,6 +346,11 @@ Case load_case_text(const std::string& text, const std::string& origin_name, con
     throw parse_error(origin_name, e);
   }
   return read_with_overrides(root, origin, "", /*has_fluid_default=*/false, overrides, out_dir);
+}
+
+CaseLimits& case_limits() {
+  static CaseLimits limits;
+  return limits;
 }
 
 std::vector<std::string> case_keys() {

@@ -52,11 +52,11 @@ void check_structure_mesh_size(const Case& c, const Origin& o) {
     fail(o, "structure.h", "= " + shortest(s.h) + " is more than ten times the structure's thickness",
          "(0, 10 * structure.H = " + shortest(10 * s.H) + "] (" + o.value("structure.H", s.H, "structure.h") + ")");
   const double estimate = std::max(2.4 * s.L * s.H / (s.h * s.h), 2.0 * s.L / s.h);
-  if (estimate > kMaxStructureTriangles)
+  if (estimate > case_limits().structure_triangles)
     fail(o, "structure.h", "= " + shortest(s.h) + " would need about " + approx(estimate) +
                                " triangles for structure.L x structure.H = " + shortest(s.L) + " x " + shortest(s.H) +
-                               ", above the limit of " + shortest(kMaxStructureTriangles),
-         ">= " + approx(std::sqrt(2.4 * s.L * s.H / kMaxStructureTriangles)) + " for this structure");
+                               ", above the limit of " + shortest(case_limits().structure_triangles),
+         ">= " + approx(std::sqrt(2.4 * s.L * s.H / case_limits().structure_triangles)) + " for this structure");
 }
 
 void check_rectangle_against_obstacle(const Case& c, const Origin& o) {
@@ -110,10 +110,10 @@ void check_fluid_box(const Case& c, const Origin& o) {
                shortest(f.H1) + ") at least fluid.h/2 = " + approx(gap) + " from every side");
   const double area = f.L1 * (f.H1 + f.H2) - std::numbers::pi * ob.r * ob.r;
   const double estimate = 2.4 * area / (f.h * f.h);
-  if (estimate > kMaxFluidTriangles)
+  if (estimate > case_limits().fluid_triangles)
     fail(o, "fluid.h", "= " + shortest(f.h) + " would need about " + approx(estimate) +
-                           " triangles, above the limit of " + shortest(kMaxFluidTriangles),
-         ">= " + approx(std::sqrt(2.4 * area / kMaxFluidTriangles)) + " for this box");
+                           " triangles, above the limit of " + shortest(case_limits().fluid_triangles),
+         ">= " + approx(std::sqrt(2.4 * area / case_limits().fluid_triangles)) + " for this box");
 }
 
 // The structure at rest inside the fluid box (its clamped side on Σ1).

@@ -22,9 +22,9 @@ Mesh build_fluid_mesh(const Case& c) {
   } catch (const MeshError& e) {
     throw InputError(c.source + ": fluid.mesh: " + e.what());
   }
-  if (mesh.num_triangles() > kMaxFluidTriangles)
+  if (mesh.num_triangles() > case_limits().fluid_triangles)
     throw InputError(c.source + ": fluid.mesh: " + f.mesh + " has " + std::to_string(mesh.num_triangles()) +
-                     " triangles; allowed: at most " + std::to_string(static_cast<long>(kMaxFluidTriangles)));
+                     " triangles; allowed: at most " + std::to_string(static_cast<long>(case_limits().fluid_triangles)));
   return mesh;
 }
 

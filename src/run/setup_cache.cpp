@@ -9,24 +9,26 @@ namespace fsi {
 // obstacle.*. The fluid mesh's key leaves out the keys only the solver reads, named
 // here, so that a sweep over them meshes the box once; any other key, a new one
 // included, remeshes: a forgotten key costs time, never a wrong mesh.
+// The mesh files' names are appended as they are: json_text replaces bytes that are
+// not UTF-8, so two such names could otherwise share a key.
 std::string structure_mesh_key(const Case& c) {
-  return to_json(c.structure).dump() + to_json(c.obstacle).dump();
+  return json_text(to_json(c.structure)) + json_text(to_json(c.obstacle)) + '\0' + c.structure.mesh;
 }
 
 std::string fluid_mesh_key(const Case& c) {
   Json geometry = to_json(*c.fluid);
   for (const char* solver_only : {"mu", "f", "Vmax", "chi", "factorization", "keep_far_factors_mb"})
     geometry.erase(solver_only);
-  return geometry.dump() + to_json(c.obstacle).dump();
+  return json_text(geometry) + json_text(to_json(c.obstacle)) + '\0' + c.fluid->mesh;
 }
 
 // make_structure reads structure.*, obstacle.* and contact.*; make_fluid fluid.*
 // and the mesh (ε is set per row).
 std::string structure_setup_key(const Case& c) {
-  return structure_mesh_key(c) + to_json(c.contact).dump();
+  return structure_mesh_key(c) + json_text(to_json(c.contact));
 }
 
-std::string fluid_setup_key(const Case& c) { return to_json(*c.fluid).dump() + fluid_mesh_key(c); }
+std::string fluid_setup_key(const Case& c) { return json_text(to_json(*c.fluid)) + fluid_mesh_key(c); }
 
 const Mesh& SetupCache::structure_mesh(const Case& c) {
   const std::string key = structure_mesh_key(c);

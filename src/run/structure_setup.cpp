@@ -29,9 +29,9 @@ Mesh build_structure_mesh(const Case& c) {
   } catch (const MeshError& e) {
     throw InputError(c.source + ": structure.mesh: " + e.what());
   }
-  if (mesh.num_triangles() > kMaxStructureTriangles)
+  if (mesh.num_triangles() > case_limits().structure_triangles)
     throw InputError(c.source + ": structure.mesh: " + s.mesh + " has " + std::to_string(mesh.num_triangles()) +
-                     " triangles; allowed: at most " + std::to_string(static_cast<long>(kMaxStructureTriangles)));
+                     " triangles; allowed: at most " + std::to_string(static_cast<long>(case_limits().structure_triangles)));
   return mesh;
 }
 

@@ -86,8 +86,14 @@ double max_displacement(const Eigen::VectorXd& u) {
   return m;
 }
 
+std::string json_text(const Json& j, int indent) {
+  // Paths may hold any bytes (Linux file names are not UTF-8 by law): invalid
+  // sequences are shown as U+FFFD instead of throwing (found by fuzzing --out).
+  return j.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
 void write_json(const std::string& path, const Json& j) {
-  write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+  write_atomically(path, [&](std::ostream& out) { out << json_text(j, 2) << '\n'; });
 }
 
 }  // namespace fsi

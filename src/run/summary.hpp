@@ -28,6 +28,8 @@ Json to_json(const ContactSummary& s);
 // timing_s: total, mesh, fluid, structure, transfer (always present), then any other phase.
 Json timing_json(const PhaseTimes& times, double total);
 
+// JSON text; bytes that are not UTF-8 (in a path) become U+FFFD.
+std::string json_text(const Json& j, int indent = -1);
 void write_json(const std::string& path, const Json& j);
 
 // max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
