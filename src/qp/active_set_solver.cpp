@@ -146,7 +146,7 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
   }
   result.alpha = alpha.cwiseMax(0.0);
   result.x = cholesky_->solve(b + C_.transpose() * result.alpha);
-  result.kkt = kkt_residuals(A_, b, C_, c, result.x, result.alpha);
+  result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, alpha);
   result.status = used_fallback_ ? "converged (Lawson-Hanson fallback)" : "converged";
   if (!(result.kkt.max() <= kkt_tolerance))
     throw QpError("active-set: KKT residual " + format_kkt(result.kkt) +

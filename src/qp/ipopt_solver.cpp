@@ -95,7 +95,7 @@ class ContactTnlp final : public Ipopt::TNLP {
   }
 
   Ipopt::SolverReturn status_ = Ipopt::INTERNAL_ERROR;
-  Eigen::VectorXd x_, alpha_;
+  Eigen::VectorXd x_, alpha_;  // alpha_: IPOPT's multipliers, unscaled, not clamped
 
  private:
   static bool triplets(const SparseMatrix& M, Index* rows, Index* cols, Number* values,
@@ -179,7 +179,7 @@ QpResult IpoptSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
   result.active.resize(c.size());
   // An interior-point multiplier is never exactly zero: call a row active by its slack.
   for (Eigen::Index i = 0; i < c.size(); ++i) result.active[i] = slack[i] <= 1e-6 * gap_scale;
-  result.kkt = kkt_residuals(A_, b, C_, c, result.x, result.alpha);
+  result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, nlp->alpha_);
   if (!(result.kkt.max() <= kkt_tolerance))
     throw QpError("ipopt: KKT residual " + format_kkt(result.kkt) +
                   " above tolerance (IPOPT status " + std::to_string(static_cast<int>(status)) + ")");
