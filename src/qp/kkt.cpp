@@ -69,8 +69,9 @@ KktResiduals residuals(const SparseMatrix& A, const Eigen::VectorXd& b, const Sp
   if (c.size() == 0) return r;
   const double gap_scale = slack_scale(C, c, x);
   r.feasibility = (c - Cx).cwiseMax(0.0).maxCoeff() / gap_scale;
-  r.complementarity =
-      inf_norm(alpha.cwiseProduct(Cx - c)) / std::max(inf_norm(alpha) * gap_scale, tiny);
+  // Each factor normalised before the product, which would overflow for α ~ 1e294.
+  const double alpha_scale = std::max(inf_norm(alpha), tiny);
+  r.complementarity = inf_norm((alpha / alpha_scale).cwiseProduct((Cx - c) / gap_scale));
   // A negative α_i pulls with the force α_i C_iᵀ: measured as the stationarity is.
   // Relative to ‖α‖∞ instead, an interior-point method's ±1e-20 on rows without
   // contact (all α ≈ 0) would count as 100%.
@@ -97,6 +98,15 @@ KktResiduals solver_kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& 
                                   const SparseMatrix& C, const Eigen::VectorXd& c,
                                   const Eigen::VectorXd& x, const Eigen::VectorXd& raw_alpha) {
   return residuals(A, b, C, c, x, raw_alpha.cwiseMax(0.0), raw_alpha);
+}
+
+void require_finite(const SparseMatrix& M, const std::string& who, const std::string& what) {
+  // coeffs() holds the stored entries: an implicit zero is finite.
+  if (!M.coeffs().allFinite()) throw QpError(who + ": " + what + " has a non-finite entry");
+}
+
+void require_finite(const Eigen::VectorXd& v, const std::string& who, const std::string& what) {
+  if (!v.allFinite()) throw QpError(who + ": " + what + " has a non-finite entry");
 }
 
 }  // namespace fsi

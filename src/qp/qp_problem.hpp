@@ -57,6 +57,11 @@ struct QpError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// QpError "<who>: <what> has a non-finite entry" unless every entry of M is finite:
+// neither solver's behaviour on NaN or ±inf is defined (IPOPT may crash on it).
+void require_finite(const SparseMatrix& M, const std::string& who, const std::string& what);
+void require_finite(const Eigen::VectorXd& v, const std::string& who, const std::string& what);
+
 class QpSolver {
  public:
   virtual ~QpSolver() = default;
