@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <new>
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
@@ -56,6 +57,32 @@ CouplingResult FixedPointCoupling::run() {
   return result;
 }
 
+namespace {
+
+// Runs one phase of a pass. What a phase is expected to meet (a solver's failure: a
+// SolverFailure or a QpError; memory running out) ends the loop as a SolverFailure
+// naming the phase and the pass. Anything else (std::logic_error,
+// std::invalid_argument, std::out_of_range from our own code) is a bug: it
+// propagates, not reported as a failed solve.
+template <class Phase>
+auto guarded(const std::string& phase, int iteration, Phase&& run) -> decltype(run()) {
+  auto fail = [&](const std::string& what) {
+    return SolverFailure(phase + " failed at fixed-point iteration " + std::to_string(iteration) +
+                         ": " + what);
+  };
+  try {
+    return run();
+  } catch (const SolverFailure& e) {
+    throw fail(e.what());
+  } catch (const QpError& e) {
+    throw fail(e.what());
+  } catch (const std::bad_alloc&) {
+    throw fail("out of memory");
+  }
+}
+
+}  // namespace
+
 void FixedPointCoupling::iterate(CouplingResult& result) {
   const Mesh& reference = p_.structure.mesh();
   const int nv = reference.num_vertices();
@@ -74,7 +101,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     const ContactSolution guess = p_.structure.solve(p_.b_applied);
     if (guess.u.allFinite())
       p_.fluid.set_region_hint(p_.chi(displaced(reference, guess.u.head(nv), guess.u.tail(nv))));
-  } catch (const std::exception&) {  // no hint: the region grows when needed
+  } catch (const QpError&) {  // no hint: the region grows when needed; pass 1's QP will say why
   }
 
   for (int k = 1; k <= max_iterations_; ++k) {
@@ -92,11 +119,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     {
       const Stopwatch clock;
       const int reused_before = p_.fluid.timing().reused;
-      try {
-        fluid = &p_.fluid.solve(/*near_only=*/true);
-      } catch (const std::exception& e) {
-        fail("the fluid solve", e.what());
-      }
+      fluid = guarded("the fluid solve", k, [&] { return &p_.fluid.solve(/*near_only=*/true); });
       rec.fluid_reused = p_.fluid.timing().reused > reused_before;
       rec.t_fluid = clock.elapsed();
     }
@@ -107,26 +130,20 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
         const FluidField field(p_.fluid_locator, f);
         return Eigen::VectorXd(p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u));
       };
-      try {
+      b_S = guarded("the force transfer", k, [&] {
         try {
-          b_S = load(*fluid);
+          return load(*fluid);
         } catch (const FieldNotComputed&) {  // a vertex samples the far field: expand
-          b_S = load(p_.fluid.complete());
+          return load(p_.fluid.complete());
         }
-      } catch (const std::exception& e) {
-        fail("the force transfer", e.what());
-      }
+      });
       if (!b_S.allFinite()) fail("the force transfer", "non-finite load on the structure");
       rec.t_transfer = clock.elapsed();
     }
     {
       const Stopwatch clock;  // step 4: the contact QP, warm-started
-      ContactSolution next;
-      try {
-        next = p_.structure.solve(b_S, warm);
-      } catch (const std::exception& e) {
-        fail("the contact QP", e.what());
-      }
+      ContactSolution next =
+          guarded("the contact QP", k, [&] { return p_.structure.solve(b_S, warm); });
       if (!next.u.allFinite()) fail("the contact QP", "non-finite displacement");
       result.structure = std::move(next);  // only a good state replaces the last one
       rec.t_structure = clock.elapsed();
@@ -139,11 +156,8 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     const bool converged = rec.increment < tol_;
     result.history.push_back(rec);  // recorded before relaxing: kept if that fails
     if (!converged && k < max_iterations_) {
-      try {
-        u = p_.relaxation.next(u, result.structure.u);
-      } catch (const std::exception& e) {
-        fail("the relaxation (" + p_.relaxation.name() + ")", e.what());
-      }
+      u = guarded("the relaxation (" + p_.relaxation.name() + ")", k,
+                  [&] { return p_.relaxation.next(u, result.structure.u); });
       if (!u.allFinite()) fail("the relaxation (" + p_.relaxation.name() + ")", "non-finite iterate");
       rec.omega = result.history.back().omega = p_.relaxation.omega();
     }

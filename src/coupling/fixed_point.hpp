@@ -70,7 +70,9 @@ class FixedPointCoupling {
   bool complete_at_end = true;
 
   // Never throws for a failed solve: it stops, keeps the last good state and says
-  // why in CouplingResult::failure (a solve failed or a field became non-finite).
+  // why in CouplingResult::failure (a SolverFailure or QpError in a phase, memory
+  // running out, or a field became non-finite). A bug (std::logic_error,
+  // std::invalid_argument, ... from our own code) is not a failed solve: it propagates.
   CouplingResult run();
 
  private:

@@ -27,15 +27,10 @@ FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const Vec
       B_(assemble_divergence(reference)),
       M_(assemble_vector_mass(reference)) {}
 
-FluidForce::Terms FluidForce::terms(const SampledFluid& s, const Eigen::VectorXd& u) const {
-  Terms t;
-  t.viscous = K_mu_ * s.v;
-  t.pressure = -(B_ * s.p);
-  t.penalty = (M_ * s.v) / eps_;
-  // −∫ f_F(φ(X))·w dX, φ(X) = X + u(X) interpolated at the quadrature points.
+Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u) const {
   const int nv = mesh_.num_vertices();
   const TriangleRule rule = triangle_rule(2);
-  t.body = Eigen::VectorXd::Zero(2 * nv);
+  Eigen::VectorXd body = Eigen::VectorXd::Zero(2 * nv);
   for (int tri = 0; tri < mesh_.num_triangles(); ++tri) {
     const P1Triangle T(mesh_, tri);
     const auto& v = mesh_.triangles[tri];
@@ -45,15 +40,15 @@ FluidForce::Terms FluidForce::terms(const SampledFluid& s, const Eigen::VectorXd
       for (int a = 0; a < 3; ++a) x += l[a] * Point(u[v[a]], u[nv + v[a]]);
       const Point f = f_F_(x) * (rule.w[q] * T.area);
       for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 2; ++c) t.body[dof(v[a], c, nv)] -= f[c] * l[a];
+        for (int c = 0; c < 2; ++c) body[dof(v[a], c, nv)] -= f[c] * l[a];
     }
   }
-  return t;
+  return body;
 }
 
+// Viscous, pressure, penalty and body-force terms of eq. (33).
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
-  const Terms t = terms(s, u);
-  return t.viscous + t.pressure + t.penalty + t.body;
+  return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + body_force(u);
 }
 
 }  // namespace fsi

@@ -31,13 +31,10 @@ class FluidForce {
   // displacement u defining φ.
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
-  // The four terms separately, for checks: viscous, pressure, penalty, body force.
-  struct Terms {
-    Eigen::VectorXd viscous, pressure, penalty, body;
-  };
-  Terms terms(const SampledFluid& s, const Eigen::VectorXd& u) const;
-
  private:
+  // −∫ (f_F∘φ)·w, φ(X) = X + u(X) interpolated at the quadrature points.
+  Eigen::VectorXd body_force(const Eigen::VectorXd& u) const;
+
   const Mesh& mesh_;
   double eps_;
   VectorField f_F_;

@@ -1,6 +1,7 @@
 #include "coupling/relaxation.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -49,10 +50,26 @@ class AitkenRelaxation final : public Relaxation {
   Eigen::VectorXd previous_r_;
 };
 
+// x ↦ Lᵀ P x with P M Pᵀ = L Lᵀ (sparse Cholesky): ‖Lᵀ P x‖ = ‖x‖_M, so a Euclidean
+// least-squares problem on the mapped vectors is the one in the L²(Ω_S0) norm.
+class MassNorm {
+ public:
+  explicit MassNorm(const Eigen::SparseMatrix<double>& M) : cholesky_(M) {
+    if (cholesky_.info() != Eigen::Success)
+      throw std::invalid_argument("iqn-ils: the mass matrix is not positive definite");
+  }
+  Eigen::VectorXd map(const Eigen::VectorXd& x) const {
+    return cholesky_.matrixU() * (cholesky_.permutationP() * x);
+  }
+
+ private:
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> cholesky_;
+};
+
 class IqnIlsRelaxation final : public Relaxation {
  public:
   IqnIlsRelaxation(const RelaxationOptions& o, const Eigen::SparseMatrix<double>& M)
-      : options_(o), weights_(Eigen::VectorXd(M * Eigen::VectorXd::Ones(M.rows())).cwiseSqrt()) {}
+      : options_(o), norm_(M) {}
 
   Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
     const Eigen::VectorXd r = H_u - u;
@@ -83,15 +100,16 @@ class IqnIlsRelaxation final : public Relaxation {
   std::string name() const override { return "iqn-ils"; }
 
  private:
-  // α = argmin ‖V α + r‖ in the lumped-mass norm, by modified Gram–Schmidt on the
-  // columns newest first; a column whose new part is below `filter` of its norm is
-  // nearly dependent on newer ones and is dropped for good (the QR filter).
+  // α = argmin ‖V α + r‖_M (the L²(Ω_S0) norm, M the consistent mass), by modified
+  // Gram–Schmidt on the mapped columns newest first; a column whose new part is below
+  // `filter` of its norm is nearly dependent on newer ones and is dropped for good
+  // (the QR filter).
   Eigen::VectorXd least_squares(const Eigen::VectorXd& r) {
     std::vector<Eigen::VectorXd> Q;
     std::vector<std::size_t> kept;
     Eigen::MatrixXd R = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(V_.size()), static_cast<Eigen::Index>(V_.size()));
     for (std::size_t j = 0; j < V_.size(); ++j) {
-      Eigen::VectorXd q = weights_.cwiseProduct(V_[j]);
+      Eigen::VectorXd q = norm_.map(V_[j]);
       const double norm0 = q.norm();
       Eigen::VectorXd coeffs(static_cast<Eigen::Index>(Q.size()));
       for (std::size_t i = 0; i < Q.size(); ++i) {
@@ -113,7 +131,7 @@ class IqnIlsRelaxation final : public Relaxation {
     W_.swap(W);
     const Eigen::Index n = static_cast<Eigen::Index>(Q.size());
     Eigen::VectorXd rhs(n);
-    const Eigen::VectorXd wr = weights_.cwiseProduct(r);
+    const Eigen::VectorXd wr = norm_.map(r);
     for (Eigen::Index i = 0; i < n; ++i) rhs[i] = -Q[static_cast<std::size_t>(i)].dot(wr);
     return R.topLeftCorner(n, n).triangularView<Eigen::Upper>().solve(rhs);
   }
@@ -124,7 +142,7 @@ class IqnIlsRelaxation final : public Relaxation {
   }
 
   RelaxationOptions options_;
-  Eigen::VectorXd weights_;  // sqrt of the lumped mass
+  MassNorm norm_;
   std::deque<Eigen::VectorXd> V_, W_;
   Eigen::VectorXd previous_r_, previous_H_;
   double omega_ = 0;

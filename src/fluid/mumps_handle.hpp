@@ -10,6 +10,13 @@
 
 namespace fsi {
 
+// What MUMPS's INFO(1) < 0 (with INFO(2)) means, in words a user can act on, the
+// codes kept in brackets for experts: "the matrix is numerically singular (12
+// pivots eliminated) [INFO(1) = -10, INFO(2) = 12]". After the MUMPS 5 users' guide,
+// section "Error diagnostics"; codes a caller of this sequential, centralised,
+// assembled interface cannot meet get the bracket alone.
+std::string mumps_error_words(int info1, int info2);
+
 class MumpsHandle {
  public:
   // `who` starts every error message, e.g. "mumps-metis: MUMPS ".

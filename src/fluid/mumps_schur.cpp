@@ -30,6 +30,7 @@ void MumpsSchur::factorize(const Eigen::SparseMatrix<double>& A, const std::vect
   const int ns = static_cast<int>(gamma.size());
   if (!A.isCompressed() || A.rows() != A.cols() || ns == 0 || ns >= n)
     throw std::invalid_argument("MumpsSchur: a square compressed matrix and 0 < |Γ| < n unknowns");
+  require_finite_matrix(A, "MUMPS (Schur complement)");
   if (!m_) m_ = std::make_unique<Mumps>();
   Mumps& m = *m_;
   // The lower triangle in 1-based coordinates. If A holds only its lower triangle,
@@ -111,6 +112,7 @@ Eigen::VectorXd MumpsSchur::condense(const Eigen::VectorXd& b) {
   if (!m_) throw std::logic_error("MumpsSchur: condense() without factors (before factorize() or after release())");
   Mumps& m = *m_;
   if (b.size() != m.id().n) throw std::invalid_argument("MumpsSchur: right-hand side of the wrong size");
+  require_finite_rhs(b, "MUMPS (Schur complement)");
   b_ = b;
   Eigen::VectorXd work = b;
   m.redrhs.assign(S_.rows(), 0.0);
@@ -130,6 +132,7 @@ Eigen::VectorXd MumpsSchur::condense(const Eigen::VectorXd& b) {
 Eigen::VectorXd MumpsSchur::expand(const Eigen::VectorXd& x_gamma) {
   if (!m_ || !condensed_) throw std::logic_error("MumpsSchur: expand() before condense()");
   if (x_gamma.size() != S_.rows()) throw std::invalid_argument("MumpsSchur: x_Γ of the wrong size");
+  require_finite_rhs(x_gamma, "MUMPS (Schur complement)");
   Mumps& m = *m_;
   // MUMPS keeps the forward elimination of a condensation for one expansion only.
   if (expanded_) condense(Eigen::VectorXd(b_));

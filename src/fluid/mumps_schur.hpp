@@ -27,7 +27,8 @@ class MumpsSchur {
   // unknowns `gamma` (0-based, distinct, not empty) kept as the Schur complement.
   // `order`: the unknowns in a fill-reducing elimination order (a permutation), or
   // empty for METIS on A's pattern; Γ is eliminated last either way. Throws
-  // SolverFailure if A_FF is singular or MUMPS fails.
+  // SolverFailure if A has a non-finite entry, A_FF is singular or MUMPS fails
+  // (condense() and expand() likewise for a non-finite b or x_Γ).
   void factorize(const Eigen::SparseMatrix<double>& A, const std::vector<int>& gamma,
                  const std::vector<int>& order = {});
   // S, symmetric, both triangles filled; rows and columns in the order of `gamma`.

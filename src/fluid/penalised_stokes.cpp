@@ -166,6 +166,24 @@ void PenalisedStokes::reset() {
   chi_changed_ = true;
   chi_.setZero();
   timing_ = FluidTiming{};
+  region_hint_.resize(0);                                       // the last run's
+  if (!region_) region_margin_ = 0, region_too_large_ = false;  // nothing kept: start afresh
+}
+
+void PenalisedStokes::set_region_hint(Eigen::VectorXd chi_hint) {
+  region_hint_ = std::move(chi_hint);
+  // Only the first region covers the hint (build_near_region): a kept one that does
+  // not would be grown around χ alone, the hint ignored (a sweep's rows).
+  if (region_ && region_hint_.size() == chi_.size() && !near_region_covers(region_hint_))
+    drop_region();
+}
+
+// Forgets the near region: the next substructured solve builds a first one.
+void PenalisedStokes::drop_region() {
+  settle_pending_expansion();  // the last solution needs the old region
+  region_.reset();
+  region_margin_ = 0;
+  region_too_large_ = false;
 }
 
 // Adds sign × (the condensed element of triangle t with penalty χ/ε) to K and rhs.
@@ -305,7 +323,7 @@ Eigen::VectorXd PenalisedStokes::solve_whole() {
 // expansion to the far field is left to complete()). False: the region would be
 // most of D, solve whole.
 bool PenalisedStokes::solve_substructured() {
-  if (!region_ || !near_region_covers_chi()) {
+  if (!region_ || !near_region_covers(chi_)) {
     build_near_region();
     if (!region_) return false;
   }
@@ -344,13 +362,13 @@ bool PenalisedStokes::solve_substructured() {
   return true;
 }
 
-// χ's support and the triangles around it (sharing a vertex with it) inside the near
-// region: the structure's vertices, where the coupling samples the fields, lie in
-// those triangles, so a near-only solution serves it.
-bool PenalisedStokes::near_region_covers_chi() const {
+// The support of chi and the triangles around it (sharing a vertex with it) inside
+// the near region: the structure's vertices, where the coupling samples the fields,
+// lie in those triangles, so a near-only solution serves it.
+bool PenalisedStokes::near_region_covers(const Eigen::VectorXd& chi) const {
   const std::vector<char>& interior = region_interior_vertex_;
   for (int t = 0; t < mesh_.num_triangles(); ++t)
-    if (chi_[t] != 0)
+    if (chi[t] != 0)
       for (int v : mesh_.triangles[t])
         if (!interior[v]) return false;
   return true;

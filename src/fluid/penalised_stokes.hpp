@@ -76,11 +76,14 @@ class PenalisedStokes {
   // Where χ is expected to go (per triangle, as χ; empty: nowhere known): the first
   // near region also covers this support, so that a structure moving there does not
   // force a second far-field factorisation. The coupling predicts it from the
-  // structure under its applied loads alone.
-  void set_region_hint(Eigen::VectorXd chi_hint) { region_hint_ = std::move(chi_hint); }
+  // structure under its applied loads alone. A region kept from before (see reset())
+  // that does not cover the hint is dropped, so that the next one does.
+  void set_region_hint(Eigen::VectorXd chi_hint);
   // The substructured solver in use (null before the first substructured solve).
   const RegionSchurSolver* region() const { return region_.get(); }
   // Forget the last solution (the next solve() refactorises), e.g. for a new run.
+  // The near region and its far-field factorisation are kept (χ = 0 there, so they
+  // hold for any ε): a sweep's next row reuses them if its hint lies inside.
   void reset();
   const Eigen::VectorXd& chi() const { return chi_; }
   // Solves for the current χ; if χ did not change since the last solve, returns
@@ -122,7 +125,8 @@ class PenalisedStokes {
   std::array<int, 9> element_dofs(int t) const;
   Eigen::VectorXd solve_whole();
   bool solve_substructured();
-  bool near_region_covers_chi() const;
+  bool near_region_covers(const Eigen::VectorXd& chi) const;
+  void drop_region();
   const std::vector<int>& dof_rank();
   void build_near_region();
   void settle_pending_expansion();

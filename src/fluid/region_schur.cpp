@@ -92,7 +92,6 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
                                      const std::vector<int>& rank, const std::string& near_solver,
                                      double far_factor_budget_mb)
     : near_(near), near_solver_name_(near_solver), n_(n) {
-  const Stopwatch clock;
   const int nt = static_cast<int>(near.size());
   std::vector<int> far_triangles;
   for (int t = 0; t < nt; ++t) (near[t] ? near_triangles_ : far_triangles).push_back(t);
@@ -160,7 +159,6 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   }
   near_solver_ = make_near_solver();
   near_solver_->analyze(M_);
-  timing_.far_factorization = clock.elapsed();
 }
 
 std::unique_ptr<SparseDirectSolver> RegionSchurSolver::make_near_solver() const {
@@ -190,12 +188,9 @@ const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& elem
   }
   near_solver_->factorize(M_);
   timing_.near_factorization += clock.elapsed();
-  ++timing_.near_factorizations;
-  clock = Stopwatch{};
   x_near_ = near_solver_->solve(rhs);
   if (!x_near_.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
   const double residual = (M_ * x_near_ - rhs).norm(), scale = rhs.norm();
-  timing_.near_solve += clock.elapsed();
   if (!(residual <= 1e-8 * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned near the structure: relative "
                         "residual " + std::to_string(residual / scale) + " after the direct solve");
@@ -206,7 +201,6 @@ const Eigen::VectorXd& RegionSchurSolver::solve_near(const ElementFunction& elem
 Eigen::VectorXd RegionSchurSolver::expand() {
   if (!solved_near_) throw std::logic_error("RegionSchurSolver: expand() without a solve_near()");
   const int ng = static_cast<int>(gamma_.size());
-  Stopwatch clock;
   if (!far_.has_factors()) {
     // The far factors were released: refactorise (the near factors go first, so
     // that both are never held at once; the next solve_near() redoes them).
@@ -239,7 +233,6 @@ Eigen::VectorXd RegionSchurSolver::expand() {
     r[near_dofs_[k]] += r_near[static_cast<Eigen::Index>(k)];
     b[near_dofs_[k]] += b_near_[static_cast<Eigen::Index>(k)];
   }
-  timing_.expansion += clock.elapsed();
   const double residual = r.norm(), scale = b.norm();
   if (!(residual <= 1e-8 * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned: relative residual " +

@@ -38,10 +38,10 @@ struct ElementSystem {
 using ElementFunction = std::function<ElementSystem(int t)>;
 using ElementDofs = std::function<std::array<int, 9>(int t)>;  // the dof part alone
 
+// What PenalisedStokes reads to split its own timing (the far field's set-up it
+// times itself).
 struct RegionSchurTiming {
-  double far_factorization = 0;  // once: analysis + partial factorisation + condensation
-  double near_assembly = 0, near_factorization = 0, near_solve = 0, expansion = 0;
-  int near_factorizations = 0;
+  double near_assembly = 0, near_factorization = 0;
   int far_refactorizations = 0;  // for expansions, after the far factors were released
 };
 
@@ -63,26 +63,20 @@ class RegionSchurSolver {
                     const std::string& near_solver = kDefaultSparseSolver,
                     double far_factor_budget_mb = INFINITY);
 
-  // x with K x = b, the near triangles assembled with element(t) now. Throws
-  // SolverFailure if a factorisation fails or the residual ‖Kx − b‖ exceeds
-  // 1e-8 ‖b‖ (a nearly singular system).
-  Eigen::VectorXd solve(const ElementFunction& element) {
-    solve_near(element);
-    return expand();
-  }
-  // The same in two steps. solve_near: x on the near unknowns only (x_near[k] is
-  // unknown near_dofs()[k]), the expansion to the far field deferred; checks the
-  // near system's residual. expand: the whole x for the last solve_near, with the
-  // whole system's residual check. A coupling step needs the fields only where the
-  // structure is, so it can skip the expansion (a solve with the far factors).
+  // x with K x = b, the near triangles assembled with element(t) now, in two steps.
+  // solve_near: x on the near unknowns only (x_near[k] is unknown near_dofs()[k]),
+  // the expansion to the far field deferred; checks the near system's residual.
+  // expand: the whole x for the last solve_near, with the whole system's residual
+  // check. Both throw SolverFailure if a factorisation fails or the residual
+  // ‖Kx − b‖ exceeds 1e-8 ‖b‖ (a nearly singular system). A coupling step needs the
+  // fields only where the structure is, so it can skip the expansion (a solve with
+  // the far factors).
   const Eigen::VectorXd& solve_near(const ElementFunction& element);
   Eigen::VectorXd expand();
   const std::vector<int>& near_dofs() const { return near_dofs_; }
   const std::vector<int>& near_triangles() const { return near_triangles_; }
   const std::vector<char>& near_mask() const { return near_; }
 
-  bool is_near(int t) const { return near_[t] != 0; }
-  int far_unknowns() const { return static_cast<int>(far_dofs_.size()); }
   int interface_unknowns() const { return static_cast<int>(gamma_.size()); }
   int near_unknowns() const { return static_cast<int>(near_dofs_.size()); }
   const RegionSchurTiming& timing() const { return timing_; }
@@ -90,8 +84,6 @@ class RegionSchurSolver {
   bool keeps_far_factors() const { return keep_far_; }
   // MUMPS's memory for the far field's factorisation (INFOG(22), MB).
   double far_factor_mb() const { return far_.factor_memory_mb(); }
-  // Frees the near factors (the next solve_near() analyses M again).
-  void release_near() { near_solver_.reset(); }
 
  private:
   std::unique_ptr<SparseDirectSolver> make_near_solver() const;

@@ -16,6 +16,21 @@ namespace fsi {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
+void require_finite_matrix(const SparseMatrix& A, const std::string& who) {
+  if (!Eigen::Map<const Eigen::VectorXd>(A.valuePtr(), A.nonZeros()).allFinite())
+    throw SolverFailure(
+        who +
+        ": the matrix has a non-finite entry (NaN or inf), refused before its "
+        "factorisation (is the penalty 1/eps, the viscosity or a load out of range?)");
+}
+
+void require_finite_rhs(const Eigen::VectorXd& b, const std::string& who) {
+  if (!b.allFinite())
+    throw SolverFailure(who +
+                        ": the right-hand side has a non-finite entry (NaN or inf), refused "
+                        "before the solve (is a load or a prescribed velocity out of range?)");
+}
+
 void SparseDirectSolver::analyze(const SparseMatrix& A) {
   if (!A.isCompressed() || A.rows() != A.cols())
     throw std::logic_error(name() + ": the matrix must be square and compressed");
@@ -36,6 +51,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
                             std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
   if (!same_pattern) throw std::logic_error(name() + ": the pattern differs from the analysed one");
   factorized_ = false;
+  require_finite_matrix(A, name());
   factorize_values(A);
   factorized_ = true;
   ++factorizations_;
@@ -45,6 +61,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   if (!factorized_) throw std::logic_error(name() + ": solve() without a factorisation");
   if (rhs.size() + 1 != static_cast<Eigen::Index>(outer_.size()))
     throw std::invalid_argument(name() + ": right-hand side of the wrong size");
+  require_finite_rhs(rhs, name());
   return solve_factorized(rhs);
 }
 

@@ -4,12 +4,20 @@
 // and only the numeric factorisation is redone.
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace fsi {
+
+// SolverFailure "<who>: the matrix has a non-finite entry ..." unless every stored
+// entry of A is finite (the vector form: the right-hand side). MUMPS, UMFPACK and
+// CHOLMOD do not define what they do with NaN or ±inf: refused before each numeric
+// factorisation and each solve.
+void require_finite_matrix(const Eigen::SparseMatrix<double>& A, const std::string& who);
+void require_finite_rhs(const Eigen::VectorXd& b, const std::string& who);
 
 // What the last factorisation cost, as the library reports it (−1: not reported).
 // Flop counts follow each library's own convention; compare them within one.
@@ -25,9 +33,10 @@ class SparseDirectSolver {
   // stored, compressed); done once.
   void analyze(const Eigen::SparseMatrix<double>& A);
   // Numeric factorisation of A, whose pattern must be the analysed one (checked:
-  // std::logic_error otherwise). A singular matrix throws SolverFailure.
+  // std::logic_error otherwise). A singular matrix or a non-finite entry throws
+  // SolverFailure.
   void factorize(const Eigen::SparseMatrix<double>& A);
-  // x with A x = rhs for the last factorised A.
+  // x with A x = rhs for the last factorised A (SolverFailure if rhs is not finite).
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   virtual std::string name() const = 0;
   virtual FactorStatistics statistics() const { return {}; }

@@ -18,6 +18,8 @@ std::vector<int> indices_of(const std::vector<bool>& mask) {
 void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C) {
   if (A.rows() != A.cols() || C.cols() != A.rows())
     throw QpError("active-set: operator and constraint sizes do not match");
+  require_finite(A, "active-set", "the operator A_S");
+  require_finite(C, "active-set", "the constraint matrix C_S");
   A_ = A;
   C_ = C;
   cholesky_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
@@ -98,6 +100,8 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
   if (!cholesky_) throw QpError("active-set: solve before set_operator");
   if (b.size() != A_.rows() || c.size() != C_.rows())
     throw QpError("active-set: load or bound has the wrong size");
+  require_finite(b, "active-set", "the load b_S");
+  require_finite(c, "active-set", "the bound c_lb");
   used_fallback_ = false;
   const Eigen::Index m = C_.rows();
   const Eigen::VectorXd d = C_ * cholesky_->solve(b) - c;  // slack at α = 0
@@ -146,7 +150,7 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
   }
   result.alpha = alpha.cwiseMax(0.0);
   result.x = cholesky_->solve(b + C_.transpose() * result.alpha);
-  result.kkt = kkt_residuals(A_, b, C_, c, result.x, result.alpha);
+  result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, alpha);
   result.status = used_fallback_ ? "converged (Lawson-Hanson fallback)" : "converged";
   if (!(result.kkt.max() <= kkt_tolerance))
     throw QpError("active-set: KKT residual " + format_kkt(result.kkt) +

@@ -1,5 +1,9 @@
 // The contact QP through IPOPT (the paper's solver, eq. 20–22), as an independent
 // check of the active-set solver and for users who want the paper's setup.
+// Any finite data gives a solution within the KKT tolerance or a QpError: non-finite
+// data, a problem whose scaled form is not representable, IPOPT's failures, its
+// exceptions and its restoration phase (a crash in IPOPT 3.11, see the .cpp) are
+// all refused (tests/qp/qp_robustness_test.cpp).
 #pragma once
 
 #include "qp/qp_problem.hpp"

@@ -18,7 +18,8 @@ struct KktResiduals {
   double stationarity = 0;     // ‖Ax − b − Cᵀα‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞ + ‖Cᵀα‖∞): backward error
   double feasibility = 0;      // max(0, c − Cx)∞, relative to max(‖c‖∞, ‖C‖∞‖x‖∞)
   double complementarity = 0;  // max |α_i (Cx − c)_i|, relative to ‖α‖∞ times that
-  double dual_feasibility = 0; // max(0, −α)∞, relative to ‖α‖∞
+  // max_i max(0, −α_i)·max_j |C_ij|, the force of a negative α_i, relative as stationarity
+  double dual_feasibility = 0;
   double max() const;
 };
 
@@ -43,10 +44,23 @@ KktResiduals kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& b, cons
                            const Eigen::VectorXd& c, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& alpha);
 
+// What a solver reports for its own multipliers `raw_alpha`: the residuals of
+// (x, max(raw_alpha, 0)) — the clamped α the result carries — except the dual
+// feasibility, which is that of raw_alpha. Clamping first would report max(0, −α) = 0
+// whatever the solver computed, so a solver producing a negative multiplier would pass.
+KktResiduals solver_kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& b,
+                                  const SparseMatrix& C, const Eigen::VectorXd& c,
+                                  const Eigen::VectorXd& x, const Eigen::VectorXd& raw_alpha);
+
 // A QP solver failed (did not converge, singular operator); carries the status.
 struct QpError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// QpError "<who>: <what> has a non-finite entry" unless every entry of M is finite:
+// neither solver's behaviour on NaN or ±inf is defined (IPOPT may crash on it).
+void require_finite(const SparseMatrix& M, const std::string& who, const std::string& what);
+void require_finite(const Eigen::VectorXd& v, const std::string& who, const std::string& what);
 
 class QpSolver {
  public:

@@ -55,8 +55,4 @@ ContactConstraint assemble_contact(const Mesh& mesh, int gamma_c_label, const Fo
   return out;
 }
 
-double linearised_gap(const Point& X, double u1, double u2, const Foundation& psi) {
-  return X.y() + u2 - psi.psi(X.x()) - psi.dpsi(X.x()) * u1;
-}
-
 }  // namespace fsi

@@ -23,8 +23,4 @@ struct ContactConstraint {
 ContactConstraint assemble_contact(const Mesh& mesh, int gamma_c_label, const Foundation& psi,
                                    int gauss_points = 5);
 
-// Pointwise gap of the linearised constraint at a vertex:
-// X2 + u2 − ψ(X1) − ψ'(X1) u1 (≥ 0 when admissible).
-double linearised_gap(const Point& X, double u1, double u2, const Foundation& psi);
-
 }  // namespace fsi

@@ -2,9 +2,15 @@
 // (hF = 0.02, hS = 0.03: 2.4k fluid triangles; each run takes well under a second).
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <new>
+#include <stdexcept>
+
+#include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "io/case.hpp"
+#include "qp/active_set_solver.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/structure_setup.hpp"
 
@@ -33,11 +39,59 @@ class PoisonedRelaxation final : public Relaxation {
   int good_, calls_ = 0;
 };
 
-// `kkt_tolerance` < 0 makes every contact QP fail (to exercise a first-pass failure).
-Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr, double kkt_tolerance = 1e-9) {
+// A constant-ω relaxation whose step number `at` runs `thrower` (to exercise how the
+// loop treats what a phase throws).
+class ThrowingRelaxation final : public Relaxation {
+ public:
+  ThrowingRelaxation(int at, std::function<void()> thrower)
+      : at_(at), thrower_(std::move(thrower)) {}
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+    if (++calls_ == at_) thrower_();
+    return u + 0.1 * (H_u - u);
+  }
+  double omega() const override { return 0.1; }
+  std::string name() const override { return "throwing"; }
+
+ private:
+  int at_, calls_ = 0;
+  std::function<void()> thrower_;
+};
+
+// The active-set solver, except that solve number `at` runs `thrower`; solve 1 is
+// the loop's guess of where the structure goes (the region hint), solve 2 pass 1's.
+class ThrowingQp final : public QpSolver {
+ public:
+  ThrowingQp(int at, std::function<void()> thrower) : at_(at), thrower_(std::move(thrower)) {}
+  void set_operator(const SparseMatrix& A, const SparseMatrix& C) override {
+    inner_.set_operator(A, C);
+  }
+  QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
+                 const QpResult* warm) override {
+    if (++calls_ == at_) thrower_();
+    return inner_.solve(b, c, warm);
+  }
+  std::string name() const override { return "throwing"; }
+
+ private:
+  int at_, calls_ = 0;
+  std::function<void()> thrower_;
+  ActiveSetSolver inner_;
+};
+
+// `kkt_tolerance` < 0 makes every contact QP fail (to exercise a first-pass failure);
+// `qp`, if given, replaces the case's QP solver.
+Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr,
+              double kkt_tolerance = 1e-9, QpSolver* qp = nullptr) {
   sets.insert(sets.begin(), {"fluid.h=0.02", "structure.h=0.03"});
   const Case c = load_case("", sets);
   StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
+  if (qp) {
+    Mesh mesh = s.mesh();
+    const int gamma_c = mesh.label("Gamma_C");
+    const std::vector<int> fixed = clamped_dofs(mesh, mesh.label("Gamma_D"));
+    s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation,
+                                                      gamma_c, fixed, *qp);
+  }
   s.solver->qp_solver().kkt_tolerance = kkt_tolerance;
   FluidSetup f = make_fluid(c, make_fluid_mesh(c), c.coupling.eps);
   const Point f_F = c.fluid->f;
@@ -165,6 +219,49 @@ TEST(Fsi, FirstPassFailureKeepsTheCompleteStateAtRest) {
   EXPECT_EQ(c.result.structure.qp.alpha.norm(), 0.0);
   EXPECT_EQ(c.result.structure.qp.active.size(), static_cast<std::size_t>(m));
   EXPECT_EQ(c.result.structure.qp.active_count(), 0);
+}
+
+// What a phase throws: an expected failure (a solver's SolverFailure or QpError, or
+// memory running out) ends the loop with CouplingResult::failure naming the phase and
+// the pass; a bug in our own code (std::logic_error, std::invalid_argument,
+// std::out_of_range) propagates instead of passing for a failed solve.
+TEST(Fsi, AnExpectedFailureInAPhaseEndsTheLoopWithAMessage) {
+  const std::vector<std::pair<std::string, std::function<void()>>> failures = {
+      {"a SolverFailure", [] { throw SolverFailure("the solver gave up"); }},
+      {"a QpError", [] { throw QpError("the solver gave up"); }},
+      {"out of memory", [] { throw std::bad_alloc(); }},
+  };
+  for (const auto& [what, thrower] : failures) {
+    ThrowingRelaxation relaxation(2, thrower);
+    const Coupled c = solve({}, &relaxation);
+    EXPECT_FALSE(c.result.converged) << what;
+    EXPECT_NE(c.result.failure.find("the relaxation (throwing) failed at fixed-point iteration 2"),
+              std::string::npos)
+        << what << ": " << c.result.failure;
+    EXPECT_EQ(c.result.history.size(), 2u) << what;
+    EXPECT_TRUE(c.result.structure.u.allFinite()) << what;
+  }
+}
+
+TEST(Fsi, ABugInAPhasePropagates) {
+  ThrowingRelaxation logic(2, [] { throw std::logic_error("a bug"); });
+  EXPECT_THROW(solve({}, &logic), std::logic_error);
+  ThrowingRelaxation argument(1, [] { throw std::invalid_argument("a bug"); });
+  EXPECT_THROW(solve({}, &argument), std::invalid_argument);
+  ThrowingRelaxation range(3, [] { throw std::out_of_range("a bug"); });
+  EXPECT_THROW(solve({}, &range), std::out_of_range);
+  ThrowingQp contact(2, [] { throw std::logic_error("a bug"); });  // pass 1's QP
+  EXPECT_THROW(solve({}, nullptr, 1e-9, &contact), std::logic_error);
+}
+
+// The guess before the loop (the region hint) may fail as a solver does: the loop
+// runs without a hint and converges as usual. A bug there is not swallowed.
+TEST(Fsi, TheRegionHintMayFailButNotHideABug) {
+  ThrowingQp failing(1, [] { throw QpError("the solver gave up"); });
+  const Coupled c = solve({}, nullptr, 1e-9, &failing);
+  EXPECT_TRUE(c.result.converged) << c.result.failure;
+  ThrowingQp buggy(1, [] { throw std::logic_error("a bug"); });
+  EXPECT_THROW(solve({}, nullptr, 1e-9, &buggy), std::logic_error);
 }
 
 TEST(Fsi, InterruptStopsAfterTheCurrentIteration) {

@@ -183,6 +183,51 @@ TEST(RegionSchur, AHintOfWhereChiGoesSavesTheSecondRegion) {
   ASSERT_NE(unhinted.region(), nullptr);
 }
 
+// Whether every triangle of χ's support is in the near region in use.
+bool region_covers(const PenalisedStokes& s, const Eigen::VectorXd& chi) {
+  if (!s.region()) return false;
+  for (Eigen::Index t = 0; t < chi.size(); ++t)
+    if (chi[t] != 0 && !s.region()->near_mask()[static_cast<std::size_t>(t)]) return false;
+  return true;
+}
+
+// A sweep reuses one PenalisedStokes across rows, reset() and a new ε between them.
+// A hint given after reset() is honoured: the region kept from the last row does
+// not cover it, so it is dropped and the row's first region covers the hint (χ
+// then moves there without a second far-field factorisation). A hint the kept
+// region covers keeps it: the row needs no far-field factorisation at all.
+TEST(RegionSchur, AHintGivenAfterResetIsHonoured) {
+  const Box box(32);
+  PenalisedStokes whole = box.stokes(1e-5, FluidFactorization::whole);
+  PenalisedStokes schur = box.stokes(1e-5, FluidFactorization::schur);
+  const Eigen::VectorXd first_row = box.block(0.05, 0.75, 0.12, 0.08);
+  schur.set_region_hint(first_row);
+  schur.set_chi(first_row);
+  schur.solve();
+  ASSERT_NE(schur.region(), nullptr);
+
+  const Eigen::VectorXd start = box.block(0.44, 0.62, 0.12, 0.08),
+                        end = box.block(0.44, 0.15, 0.12, 0.08);
+  ASSERT_FALSE(region_covers(schur, end));
+  schur.reset(), schur.set_eps(1e-6), whole.set_eps(1e-6);
+  schur.set_region_hint(end);
+  schur.set_chi(start), whole.set_chi(start);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_TRUE(region_covers(schur, end)) << "the first region of the row ignores the hint";
+  schur.set_chi(end), whole.set_chi(end);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_EQ(schur.timing().regions, 1);
+  EXPECT_NE(schur.region(), nullptr) << "solved whole: the region grew too large";
+
+  schur.reset(), schur.set_eps(1e-5), whole.set_eps(1e-5);
+  schur.set_region_hint(end);  // covered: the region is kept
+  schur.set_chi(start), whole.set_chi(start);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  schur.set_chi(end), whole.set_chi(end);
+  EXPECT_LT(relative_difference(whole.solve(), schur.solve()), 1e-10);
+  EXPECT_EQ(schur.timing().regions, 0);
+}
+
 TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
   const Box box;
   PenalisedStokes whole = box.stokes(1e-4, FluidFactorization::whole);

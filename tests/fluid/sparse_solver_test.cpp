@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
+#include <limits>
 
 #include "common/errors.hpp"
 #include "fluid/penalised_stokes.hpp"
@@ -153,6 +155,36 @@ TEST_P(EverySolver, PenalisedStokesReportsASingularSystem) {
     FAIL() << GetParam() << " solved a system with rigid motions in its kernel";
   } catch (const SolverFailure& e) {
     EXPECT_NE(std::string(e.what()).find("singular"), std::string::npos) << e.what();
+  }
+}
+
+// A NaN or an infinity in the matrix or the right-hand side is refused with a
+// SolverFailure that says so, before the library sees it: none of them defines
+// what it does with one.
+TEST_P(EverySolver, RefusesNonFiniteEntries) {
+  const Cavity cavity;
+  PenalisedStokes stokes = cavity.stokes(1e-5);
+  stokes.set_chi(cavity.chi(false));
+  stokes.assemble_full();
+  auto expect_refused = [&](const std::function<void()>& call, const char* what) {
+    try {
+      call();
+      ADD_FAILURE() << GetParam() << " accepted " << what;
+    } catch (const SolverFailure& e) {
+      EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+    }
+  };
+  for (double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Eigen::SparseMatrix<double> K = stokes.matrix();
+    K.valuePtr()[K.nonZeros() / 2] = bad;
+    auto solver = make_sparse_solver(GetParam());
+    solver->analyze(K);
+    expect_refused([&] { solver->factorize(K); }, "a matrix with a non-finite entry");
+    solver->factorize(stokes.matrix());
+    Eigen::VectorXd rhs = stokes.rhs();
+    rhs[3] = bad;
+    expect_refused([&] { solver->solve(rhs); }, "a right-hand side with a non-finite entry");
   }
 }
 

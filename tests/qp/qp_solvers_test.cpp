@@ -3,38 +3,15 @@
 // satisfies the KKT conditions.
 #include <gtest/gtest.h>
 
-#include <Eigen/Dense>
-#include <random>
-
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"
+#include "qp/random_qp.hpp"
 
 namespace fsi {
 namespace {
 
-struct RandomQp {
-  SparseMatrix A, C;
-  Eigen::VectorXd b, c;
-};
-
-// A = MᵀM + I (SPD), sparse-ish C with full row rank, bounds that make some rows bind.
-RandomQp random_qp(int n, int m, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::normal_distribution<double> N(0.0, 1.0);
-  Eigen::MatrixXd M(n, n), C(m, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) M(i, j) = (std::abs(i - j) <= 2) ? N(gen) : 0.0;
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < n; ++j) C(i, j) = (j % m == i || (j + 1) % m == i) ? N(gen) : 0.0;
-  RandomQp q;
-  q.A = (M.transpose() * M + Eigen::MatrixXd::Identity(n, n)).sparseView();
-  q.C = C.sparseView();
-  q.b = Eigen::VectorXd::NullaryExpr(n, [&] { return N(gen); });
-  // Bounds around the unconstrained minimiser's values: about half the rows bind.
-  const Eigen::VectorXd x0 = Eigen::MatrixXd(q.A).llt().solve(q.b);
-  q.c = C * x0 + Eigen::VectorXd::NullaryExpr(m, [&] { return N(gen); });
-  return q;
-}
+using testing::random_qp;
+using testing::RandomQp;
 
 // Tries all 2^m active sets: solve [A −C_Aᵀ; C_A 0][x; α_A] = [b; c_A] and keep the
 // one with α_A ≥ 0 and Cx ≥ c.
@@ -124,6 +101,34 @@ TEST(QpSolvers, ReportIterationsOnTheProgressLine) {
   solver.set_operator(q.A, q.C);
   const QpResult r = solver.solve(q.b, q.c);
   EXPECT_EQ(static_cast<int>(lines.size()), r.iterations);
+}
+
+// A result carries α clamped to ≥ 0, but its dual feasibility is that of the
+// multipliers the solver computed: the force of a negative one, relative to the
+// force balance ‖A‖∞‖x‖∞ + ‖b‖∞ + ‖Cᵀα‖∞. (Both solvers once clamped first, which
+// reported 0 whatever the solver produced.) The other residuals are the clamped α's.
+TEST(QpSolvers, DualFeasibilityMeasuresTheMultipliersBeforeClamping) {
+  const RandomQp q = random_qp(40, 8, 1);
+  ActiveSetSolver solver;
+  solver.set_operator(q.A, q.C);
+  const QpResult r = solver.solve(q.b, q.c);
+  Eigen::Index inactive = 0;
+  while (r.active[inactive]) ++inactive;
+  Eigen::VectorXd raw = r.alpha;
+  raw[inactive] = -1e-3 * r.alpha.maxCoeff();
+
+  const KktResiduals k = solver_kkt_residuals(q.A, q.b, q.C, q.c, r.x, raw);
+  const Eigen::MatrixXd A(q.A), C(q.C);
+  const double balance = A.cwiseAbs().rowwise().sum().maxCoeff() * r.x.lpNorm<Eigen::Infinity>() +
+                         q.b.lpNorm<Eigen::Infinity>() +
+                         (C.transpose() * r.alpha).lpNorm<Eigen::Infinity>();
+  const double force = -raw[inactive] * C.row(inactive).cwiseAbs().maxCoeff();
+  EXPECT_NEAR(k.dual_feasibility, force / balance, 1e-12 * force / balance);
+  EXPECT_GT(k.max(), solver.kkt_tolerance);
+  const KktResiduals clamped = kkt_residuals(q.A, q.b, q.C, q.c, r.x, r.alpha);
+  EXPECT_EQ(k.stationarity, clamped.stationarity);
+  EXPECT_EQ(k.complementarity, clamped.complementarity);
+  EXPECT_EQ(clamped.dual_feasibility, 0.0);
 }
 
 TEST(QpSolvers, RejectAnIndefiniteOperator) {
