@@ -1,0 +1,23 @@
+# The Debian packages fsicontact builds on (scripts/install-deps.sh installs them),
+# shared by the main build and the fuzzing build (fuzz/CMakeLists.txt).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(tomlplusplus REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)
+find_package(Boost 1.74 REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+
+# SuiteSparse and Gmsh ship no CMake config on Debian 12: locate them directly.
+find_path(SUITESPARSE_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)
+foreach(lib umfpack cholmod amd colamd camd ccolamd suitesparseconfig)
+  find_library(SUITESPARSE_${lib}_LIBRARY ${lib} REQUIRED)
+  list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${lib}_LIBRARY})
+endforeach()
+# MUMPS, sequential (libmumps-seq-dev): the fluid's symmetric indefinite direct solver.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(MUMPS_LIBRARY dmumps_seq REQUIRED)
+find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+
