@@ -46,10 +46,12 @@ TEST(SetupKeys, EverySectionKeyAChangesItsSetupKey) {
     const std::string section = key.substr(0, key.find('.'));
     if (section == "coupling" || section == "output" || section == "name") continue;  // set per row, or no setup
     const Case c = load_case("", {key + "=" + other_value(key)});
-    if (section == "fluid" || section == "obstacle")
+    if (section == "fluid" || section == "obstacle") {
       EXPECT_NE(fluid_setup_key(c), fluid_setup_key(base)) << key;
-    if (section == "structure" || section == "obstacle" || section == "contact")
+    }
+    if (section == "structure" || section == "obstacle" || section == "contact") {
       EXPECT_NE(structure_setup_key(c), structure_setup_key(base)) << key;
+    }
   }
 }
 
