@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/fault.hpp"
 #include "io/atomic_file.hpp"
 #include "run/output_dir.hpp"
@@ -18,8 +19,8 @@ std::string contact_report(const Case& c, const MeshStatistics& stats, const Str
   char text[1024];
   const std::string zone = contact.active_nodes
                                ? "Contact on " + std::to_string(contact.active_nodes) + " node(s), X1 in [" +
-                                     std::to_string(contact.x_min) + ", " + std::to_string(contact.x_max) +
-                                     "] m, peak pressure " + std::to_string(contact.max_multiplier) + " Pa."
+                                     approx(contact.x_min, 6) + ", " + approx(contact.x_max, 6) +
+                                     "] m, peak pressure " + approx(contact.max_multiplier, 6) + " Pa."
                                : "No contact.";
   std::snprintf(text, sizeof text,
                 "%s: contact problem on %d triangles / %d vertices, solved by %s in %d iteration(s) (largest KKT "

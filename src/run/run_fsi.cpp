@@ -6,6 +6,7 @@
 #include <iomanip>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/fault.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
@@ -158,7 +159,7 @@ std::string fsi_report(const Case& c, const CouplingResult& result, const FluidN
     return text;
   }
   const std::string zone =
-      cs.active_nodes ? ", X1 in [" + std::to_string(cs.x_min) + ", " + std::to_string(cs.x_max) + "] m" : "";
+      cs.active_nodes ? ", X1 in [" + approx(cs.x_min, 6) + ", " + approx(cs.x_max, 6) + "] m" : "";
   std::snprintf(text, sizeof text,
                 "%s: %s after %d fixed-point iterations (%s, last increment %.4e, tol %g). |v| in the structure "
                 "%.5g, |v|/eps %.6g. Max displacement %.4g m; contact on %d node(s)%s. Fluid %d triangles, "
