@@ -23,9 +23,12 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory fuzz-smoke
 
-# libFuzzer targets (clang, ASan + UBSan): a short run of each is part of `make test`;
-# `make fuzz` runs each for FUZZ_RUNS inputs (docs/reliability.md).
+# libFuzzer targets (clang, ASan + UBSan, the whole program instrumented): a short
+# run of each is part of `make test`; `make fuzz` runs each for FUZZ_RUNS inputs
+# (docs/reliability.md). fuzz_cli works in its own scratch directory: its corpus
+# paths must be absolute.
 FUZZ_RUNS ?= 200000
+FUZZ_LSAN = LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 fuzz-build: deps
 	@cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ > /dev/null
 	@cmake --build build-fuzz -j $(JOBS)
@@ -34,9 +37,11 @@ fuzz-smoke: fuzz-build
 	@cd build-fuzz && ctest --output-on-failure
 
 fuzz: fuzz-build
-	@mkdir -p build-fuzz/long-case build-fuzz/long-msh
-	ASAN_OPTIONS=detect_leaks=1 build-fuzz/fuzz_case -runs=$(FUZZ_RUNS) -max_len=4096 build-fuzz/long-case cases tests/data/fuzz-regressions
-	ASAN_OPTIONS=detect_leaks=0 build-fuzz/fuzz_msh -runs=$(FUZZ_RUNS) -max_len=20000 build-fuzz/long-msh cases/meshes
+	@mkdir -p build-fuzz/long-case build-fuzz/long-msh build-fuzz/long-cli
+	ASAN_OPTIONS=detect_leaks=1 $(FUZZ_LSAN) build-fuzz/fuzz_case -runs=$(FUZZ_RUNS) -max_len=4096 -timeout=60 build-fuzz/long-case cases tests/data/fuzz-regressions
+	ASAN_OPTIONS=detect_leaks=0 build-fuzz/fuzz_msh -runs=$(FUZZ_RUNS) -max_len=20000 -timeout=60 build-fuzz/long-msh cases/meshes
+	ASAN_OPTIONS=detect_leaks=1 $(FUZZ_LSAN) build-fuzz/fuzz_cli -runs=$(FUZZ_RUNS) -max_len=65536 -timeout=60 \
+	  -artifact_prefix=$(CURDIR)/build-fuzz/ $(CURDIR)/build-fuzz/long-cli $(CURDIR)/fuzz/seeds/cli
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps

@@ -14,6 +14,7 @@
 // --out gets one, so that output.dir in a case file cannot point elsewhere.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -25,7 +26,9 @@
 
 #include "cli.hpp"
 #include "common/interrupt.hpp"
+#include "io/atomic_file.hpp"
 #include "io/case.hpp"
+#include "run/output_dir.hpp"
 
 namespace {
 
@@ -50,7 +53,8 @@ Input parse(const std::string& text) {
       if (kFiles.count(section)) file = &in.files.emplace_back(section, "").second;
       continue;
     }
-    if (section == "args" && in.args.size() < 40) in.args.push_back(line.substr(0, 4096));
+    // An argument is a C string: it ends at a NUL, as the kernel would end it.
+    if (section == "args" && in.args.size() < 40) in.args.push_back(line.substr(0, std::min<std::size_t>(4096, line.find('\0'))));
     else if (file) *file += line + "\n";
   }
   return in;
@@ -79,6 +83,7 @@ nlohmann::json summary_in(const fs::path& dir) {
 
 struct NullBuffer : std::streambuf {
   int overflow(int c) override { return c; }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
 };
 
 }  // namespace
@@ -101,11 +106,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
   std::vector<std::string> args = {"fsicontact"};
   std::string command, out_dir;
-  bool help = false;
   for (std::size_t i = 0; i < in.args.size(); ++i) {
     std::string a = in.args[i];
     if (command.empty() && (a == "run" || a == "sweep")) command = a;
-    if (a == "-h" || a == "--help") help = true;
     if (a.rfind("--out=", 0) == 0) a = "--out=" + (out_dir = confine(a.substr(6)));
     args.push_back(a);
     if (a == "--out" && i + 1 < in.args.size()) args.push_back(out_dir = confine(in.args[++i]));
@@ -117,17 +120,20 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::set<std::string> before = listing(".");
   NullBuffer null;
   std::ostream quiet(&null);
+  std::ostringstream out;  // to tell a help text (-h, -hq, --help ...) from a run
   fsi::clear_interrupt();
   int status = -1;
   try {
-    status = fsi::fsicontact_main(static_cast<int>(argv.size()), argv.data(), quiet, quiet);
+    status = fsi::fsicontact_main(static_cast<int>(argv.size()), argv.data(), out, quiet);
   } catch (...) {
     __builtin_trap();  // nothing may escape the command line
   }
+  const bool help = out.str().find("Usage:") != std::string::npos;
   if (status < 0 || status > 3) __builtin_trap();
   if (status == 2 && listing(".") != before) __builtin_trap();  // invalid input wrote something
   for (const auto& name : listing("."))
-    if (name.find(".tmp") != std::string::npos && !kFiles.count(fs::path(name).filename().string())) __builtin_trap();
+    for (const std::string& output : fsi::output_file_names())
+      if (fsi::is_temporary_of(fs::path(name).filename().string(), output)) __builtin_trap();  // a temporary left
   if (status != 2 && !help && !command.empty() && !out_dir.empty() && fs::is_directory(out_dir)) {
     const nlohmann::json j = summary_in(out_dir);
     if (command == "sweep" && j.value("status", "") != "complete") __builtin_trap();

@@ -84,6 +84,25 @@ void check_contact_zone(const Case& c, const Mesh& mesh, const std::string& what
                      shortest(2 * o.gamma * o.r) + " > structure.h = " + shortest(c.structure.h) + ")");
 }
 
+// A part of the structure that no path of triangles joins to Γ_D floats: nothing
+// holds it but frictionless contact, A_S is singular and the Cholesky factorisation
+// fails (a solver error for what is an input error).
+void check_clamped(const Case& c, const Mesh& mesh, const std::string& what) {
+  std::vector<int> parent(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v) parent[v] = v;
+  auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : mesh.triangles) parent[root(t[1])] = root(t[0]), parent[root(t[2])] = root(t[0]);
+  std::vector<char> held(mesh.num_vertices(), 0);
+  for (int v : mesh.vertices_on(mesh.label("Gamma_D"))) held[root(v)] = 1;
+  for (const auto& t : mesh.triangles)
+    if (!held[root(t[0])])
+      throw InputError(c.source + ": " + what + ": the part of the structure around " + at(mesh.vertices[t[0]]) +
+                       " is not connected to Gamma_D; allowed: every part of the mesh joined to the clamped side");
+}
+
 void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {
   const auto& o = c.obstacle;
   for (const Point& X : mesh.vertices)
@@ -121,6 +140,7 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
     check_labelled(c, mesh, what);
   }
   check_contact_zone(c, mesh, what);
+  check_clamped(c, mesh, what);
   check_outside_disk(c, mesh, what);
   if (c.fluid) check_inside_box(c, mesh, what);
 }

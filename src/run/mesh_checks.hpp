@@ -10,9 +10,9 @@
 namespace fsi {
 
 // The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
-// vertex strictly inside it (else no contact row exists), no vertex inside the
-// disk, every boundary edge labelled, inside the fluid box (FSI); a mesh file's
-// extent must equal structure.L × structure.H.
+// vertex strictly inside it (else no contact row exists), every part joined to Γ_D
+// (else A_S is singular), no vertex inside the disk, every boundary edge labelled,
+// inside the fluid box (FSI); a mesh file's extent must equal structure.L × structure.H.
 void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,

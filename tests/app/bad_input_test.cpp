@@ -5,6 +5,7 @@
 #include <set>
 
 #include "support/cli.hpp"
+#include "support/msh.hpp"
 
 namespace fsi {
 namespace {
@@ -43,6 +44,20 @@ struct BadInput {
 
 std::string shipped(const std::string& name) {
   return testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/cases/meshes/" + name);
+}
+
+// A beam of two blocks that share no vertex: the right one is held by nothing.
+// Nodes: the left block's bottom 1–5 (Gamma_C on 2–3–4, above the obstacle at
+// x0 = 0.015), its top 6, 7; the right block 8–11.
+std::string floating_block_msh() {
+  testing::HandMesh m;
+  m.nodes = {{0, 0}, {0.012, 0}, {0.015, 0}, {0.018, 0}, {0.03, 0}, {0, 0.005}, {0.03, 0.005},
+             {0.032, 0}, {0.06, 0}, {0.06, 0.005}, {0.032, 0.005}};
+  m.triangles = {{1, 2, 6}, {2, 3, 6}, {3, 4, 6}, {4, 5, 6}, {5, 7, 6}, {8, 9, 10}, {8, 10, 11}};
+  m.lines = {{"Gamma_D", {{6, 1}}},
+             {"Gamma_C", {{2, 3}, {3, 4}}},
+             {"Gamma_N", {{1, 2}, {4, 5}, {5, 7}, {7, 6}, {8, 9}, {9, 10}, {10, 11}, {11, 8}}}};
+  return testing::msh22(m);
 }
 
 // The §7.2 case on the shipped fluid mesh (hF = 0.02), copied as box.msh.
@@ -136,6 +151,7 @@ std::vector<BadInput> bad_inputs() {
       {"fluid_mesh_obstacle_elsewhere", kBoxCase, "--set obstacle.r=0.04", {"obstacle.r = 0.04 contradicts fluid.mesh", "Sigma_5"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
       {"fluid_mesh_inflow_label_at_the_bottom", kBoxCase, "", {"fluid.mesh", "Sigma_4", "not on the top"},
        {{"box.msh", replace(replace(replace(shipped("paper-7.2-box-h0.02.msh"), "1 2 \"Sigma_2\"", "1 2 \"Sigma_X\""), "1 4 \"Sigma_4\"", "1 4 \"Sigma_2\""), "1 2 \"Sigma_X\"", "1 2 \"Sigma_4\"")}}},
+      {"structure_mesh_with_a_floating_part", replace(replace(kValid, "h = 0.0014", "mesh = \"floating.msh\""), "x0 = 0.055", "x0 = 0.015"), "", {"structure.mesh floating.msh", "not connected to Gamma_D"}, {{"floating.msh", floating_block_msh()}}},
       {"structure_mesh_longer_than_L", replace(replace(kValid, "h = 0.0014", "mesh = \"beam.msh\""), "L = 0.06", "L = 0.07"), "", {"structure.L = 0.07 contradicts structure.mesh", "0.06"}, {{"beam.msh", shipped("paper-7.1-beam.msh")}}},
   };
 }
