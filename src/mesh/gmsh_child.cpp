@@ -108,6 +108,14 @@ void arrange_fds(int reply, int output) {
     for (int fd = kReplyFd + 1; fd < 4096; ++fd) ::close(fd);
 }
 
+// Lowers a limit for this process (never above the hard limit it inherited).
+void lower_limit(int resource, rlim_t value) {
+  rlimit limit{};
+  if (::getrlimit(resource, &limit) != 0) return;
+  limit.rlim_cur = std::min(value, limit.rlim_max);
+  ::setrlimit(resource, &limit);
+}
+
 // Default dispositions, so that a crash is reported as the signal (and not through
 // a handler the parent installed, such as a sanitizer's), and no core file.
 void arrange_signals_and_limits(std::size_t address_space_cap) {
@@ -116,14 +124,9 @@ void arrange_signals_and_limits(std::size_t address_space_cap) {
   sigset_t none;
   ::sigemptyset(&none);
   ::sigprocmask(SIG_SETMASK, &none, nullptr);
-  const rlimit no_core{0, 0};
-  ::setrlimit(RLIMIT_CORE, &no_core);
-  const rlimit output{16u << 20, 16u << 20};  // Gmsh writes no file; caps its chatter
-  ::setrlimit(RLIMIT_FSIZE, &output);
-  if (address_space_cap > 0) {
-    const rlimit as{address_space_cap, address_space_cap};
-    ::setrlimit(RLIMIT_AS, &as);
-  }
+  lower_limit(RLIMIT_CORE, 0);
+  lower_limit(RLIMIT_FSIZE, 16u << 20);  // Gmsh writes no file; caps its chatter
+  if (address_space_cap > 0) lower_limit(RLIMIT_AS, address_space_cap);
 }
 
 [[noreturn]] void child_main(const std::function<std::vector<char>()>& job, int reply, int output,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "mesh/mesh_error.hpp"
@@ -145,7 +146,9 @@ std::vector<const RawElements*> blocks_of(const RawMesh& raw, const RawGroup& gr
   const std::string kind = group.dim == 2 ? "surface" : "curve";
   std::vector<const RawElements*> out;
   std::size_t count = 0;
-  for (int entity : group.entities)
+  std::set<int> seen;  // groups merged by name may list an entity twice
+  for (int entity : group.entities) {
+    if (!seen.insert(entity).second) continue;
     for (const auto& b : raw.elements) {
       if (b.dim != group.dim || b.entity != entity || b.tags.empty()) continue;
       if (b.gmsh_type != kind_wanted.gmsh_type)
@@ -159,6 +162,7 @@ std::vector<const RawElements*> blocks_of(const RawMesh& raw, const RawGroup& gr
       out.push_back(&b);
       count += b.tags.size();
     }
+  }
   if (count == 0) throw MeshError("physical " + kind + " '" + group.name + "' holds no elements");
   return out;
 }

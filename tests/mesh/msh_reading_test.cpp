@@ -58,6 +58,12 @@ TEST(MshReading, EachSurfaceIsTurnedOnItsOwn) {
   for (int t = 0; t < 4; ++t) EXPECT_DOUBLE_EQ(m.area(t), ref.area(t));
 }
 
+// Physical groups are merged by name; a surface in two groups of one name is one
+// surface (it was read twice: "triangles 7 and 7 overlap").
+TEST(MshReading, ASurfaceInTwoGroupsOfOneNameCountsOnce) {
+  EXPECT_EQ(read_structure(kSeeds + "one-surface-in-two-groups-of-one-name.msh").num_triangles(), 4);
+}
+
 // Counts as before the checks were added (the vertices are bit for bit the same too).
 TEST(MshReading, TheRepositorysMeshesLoadAsBefore) {
   const Mesh beam = read_structure(kCases + "paper-7.1-beam.msh");
