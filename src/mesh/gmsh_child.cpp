@@ -19,6 +19,7 @@
 #include <exception>
 #include <fstream>
 #include <new>
+#include <stdexcept>
 
 #include "mesh/mesh_error.hpp"
 
@@ -70,6 +71,8 @@ bool write_all(int fd, const char* p, std::size_t n) {
     reply_text_and_exit(Outcome::gmsh_error, what);
   } catch (const std::bad_alloc&) {
     reply_and_exit(Outcome::out_of_memory, nullptr, 0);
+  } catch (const std::length_error& e) {  // a count beyond any vector (measured, fuzzing)
+    reply_text_and_exit(Outcome::gmsh_error, std::string("a count too large (") + e.what() + ")");
   } catch (const std::exception& e) {
     reply_text_and_exit(Outcome::failure, e.what());
   } catch (...) {

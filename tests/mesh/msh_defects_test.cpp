@@ -18,7 +18,9 @@ struct Defect {
   std::vector<std::string> said;  // in the message
 };
 
-void PrintTo(const Defect& d, std::ostream* os) { *os << d.file; }
+void PrintTo(const Defect& d, std::ostream* os) {
+  *os << d.file;
+}
 
 std::vector<Defect> defects() {
   return {
@@ -52,6 +54,12 @@ std::vector<Defect> defects() {
        {"nodes 2 and 3 is a boundary line twice", "line 2 of 'Gamma_C'", "line 11 of 'Gamma_N'"}},
       {"non-finite-coordinate", {"node 4 has the coordinate nan"}},
       {"out-of-plane", {"node 4 has z = 0.5", "plane z = 0"}},
+      {"wrong-header-tags",
+       {"Gmsh warned: Min/Max node tags reported in section header are wrong"}},
+      // Found by fuzz_msh: Gmsh 4.8.4's reader dies of a segmentation fault on these
+      // 114 bytes, and throws std::length_error on a count in the other.
+      {"gmsh-segfaults", {"Gmsh crashed (SIGSEGV) while reading it"}},
+      {"count-beyond-max-size", {"Gmsh failed while reading it: a count too large"}},
   };
 }
 

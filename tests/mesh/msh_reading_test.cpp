@@ -61,7 +61,8 @@ TEST(MshReading, EachSurfaceIsTurnedOnItsOwn) {
 // Physical groups are merged by name; a surface in two groups of one name is one
 // surface (it was read twice: "triangles 7 and 7 overlap").
 TEST(MshReading, ASurfaceInTwoGroupsOfOneNameCountsOnce) {
-  EXPECT_EQ(read_structure(kSeeds + "one-surface-in-two-groups-of-one-name.msh").num_triangles(), 4);
+  EXPECT_EQ(read_structure(kSeeds + "one-surface-in-two-groups-of-one-name.msh").num_triangles(),
+            4);
 }
 
 // Counts as before the checks were added (the vertices are bit for bit the same too).
