@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "mesh/gmsh_io.hpp"
+#include "support/cli.hpp"
 
 namespace fsi {
 namespace {
@@ -101,23 +102,23 @@ TEST(MshFile, AScriptIsNeverRun) {
 // Gmsh picks some readers by the extension whatever the content (.stl, .step,
 // .brep, .png, .py, ...): a valid mesh under another name is refused.
 TEST(MshFile, MustHaveTheExtensionMsh) {
-  const auto path = std::filesystem::temp_directory_path() / "fsicontact-valid-mesh.stl";
-  std::filesystem::copy_file(kDir + "valid-4.1.msh", path,
-                             std::filesystem::copy_options::overwrite_existing);
+  const auto dir = testing::scratch_dir("msh-extension");
+  const auto path = dir / "valid-mesh.stl";
+  std::filesystem::copy_file(kDir + "valid-4.1.msh", path);
   try {
     read_gmsh_file(path.string(), {"Gamma_D"}, "Omega_S");
     ADD_FAILURE() << "a .stl was read";
   } catch (const MeshError& e) {
     EXPECT_NE(std::string(e.what()).find("the extension .msh"), std::string::npos) << e.what();
   }
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(MshFile, AnEmptyFileIsNotAMesh) {
-  const auto path = std::filesystem::temp_directory_path() / "fsicontact-empty.msh";
-  std::ofstream{path};
-  EXPECT_THROW(read_gmsh_file(path.string(), {"Gamma_D"}, "Omega_S"), MeshError);
-  std::filesystem::remove(path);
+  const auto dir = testing::scratch_dir("msh-empty");
+  std::ofstream{dir / "empty.msh"};
+  EXPECT_THROW(read_gmsh_file((dir / "empty.msh").string(), {"Gamma_D"}, "Omega_S"), MeshError);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(MshFile, AMissingGroupIsNamedWithAllRequired) {
