@@ -65,30 +65,6 @@ MeshStatistics statistics(const Mesh& mesh) {
   return s;
 }
 
-void orient_and_check(Mesh& mesh) {
-  const int nv = mesh.num_vertices();
-  if (nv < 3 || mesh.triangles.empty()) throw std::runtime_error("mesh has no triangles");
-  for (const auto& p : mesh.vertices)
-    if (!p.allFinite()) throw std::runtime_error("mesh has a vertex with a non-finite coordinate");
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    auto& tri = mesh.triangles[t];
-    for (int v : tri)
-      if (v < 0 || v >= nv) throw std::runtime_error("triangle refers to a missing vertex");
-    const double a = mesh.area(t);
-    // Relative to the squared longest edge: catches zero-area (collinear) triangles.
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, (mesh.vertices[tri[k]] - mesh.vertices[tri[(k + 1) % 3]]).norm());
-    if (!(std::abs(a) > 1e-12 * longest * longest))
-      throw std::runtime_error("mesh has a degenerate (zero-area) triangle, number " +
-                               std::to_string(t));
-    if (a < 0) std::swap(tri[1], tri[2]);
-  }
-  for (const auto& e : mesh.boundary_edges)
-    for (int v : e.v)
-      if (v < 0 || v >= nv) throw std::runtime_error("boundary edge refers to a missing vertex");
-}
-
 Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u1, const Eigen::VectorXd& u2) {
   Mesh out = mesh;
   for (int i = 0; i < mesh.num_vertices(); ++i) out.vertices[i] += Point(u1[i], u2[i]);

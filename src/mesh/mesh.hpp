@@ -49,11 +49,6 @@ struct MeshStatistics {
 
 MeshStatistics statistics(const Mesh& mesh);
 
-// Makes every triangle counter-clockwise and checks the mesh is usable: indices in
-// range, no degenerate triangle, boundary edges on existing vertices. Throws
-// std::runtime_error describing the first defect.
-void orient_and_check(Mesh& mesh);
-
 // Deformed copy: vertex i moved by displacement (u1[i], u2[i]).
 Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u1, const Eigen::VectorXd& u2);
 

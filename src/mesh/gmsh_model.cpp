@@ -1,0 +1,169 @@
+#include "mesh/gmsh_model.hpp"
+
+#include <gmsh.h>
+
+#include <map>
+#include <mutex>
+#include <set>
+#include <utility>
+
+#include "mesh/gmsh_io.hpp"
+#include "mesh/mesh_error.hpp"
+
+namespace fsi {
+namespace {
+
+// Options for this child's work (the parent's Gmsh keeps its own).
+void configure_gmsh(int verbosity) {
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.Verbosity", verbosity);
+  // One thread: libgomp is not fork-safe (measured: after the parent has run an
+  // OpenMP region, the child hangs in its first region with two threads); one thread
+  // also keeps the meshes reproducible.
+  gmsh::option::setNumber("General.NumThreads", 1);
+  for (const char* o : {"Mesh.MaxNumThreads1D", "Mesh.MaxNumThreads2D", "Mesh.MaxNumThreads3D"})
+    gmsh::option::setNumber(o, 1);
+  gmsh::option::setNumber("General.ExpertMode", 1);  // no "very large mesh, continue?" prompt
+}
+
+void mesh_2d(double h) {
+  gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay (DEPENDENCIES.md)
+  gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::mesh::generate(2);
+}
+
+void add_elements(RawMesh& raw, int dim, int entity) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
+  for (std::size_t k = 0; k < types.size(); ++k) {
+    std::string name;
+    int type_dim, order, num_nodes, num_primary;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(types[k], name, type_dim, order, num_nodes, local,
+                                            num_primary);
+    raw.elements.push_back(
+        {dim, entity, types[k], num_nodes, std::move(tags[k]), std::move(nodes[k])});
+  }
+}
+
+// Nodes, and the elements of every entity of `groups` (each entity once).
+RawMesh extract(std::vector<RawGroup> groups) {
+  RawMesh raw;
+  std::vector<double> parametric;
+  // Each node once: with includeBoundary, nodes on an entity's boundary come again.
+  gmsh::model::mesh::getNodes(raw.node_tags, raw.coords, parametric, -1, -1, false, false);
+  std::set<std::pair<int, int>> done;
+  for (const auto& g : groups)
+    for (int e : g.entities)
+      if (done.insert({g.dim, e}).second) add_elements(raw, g.dim, e);
+  raw.groups = std::move(groups);
+  return raw;
+}
+
+// Gmsh's own physical groups, merged by (dimension, name).
+std::vector<RawGroup> physical_groups() {
+  std::map<std::pair<int, std::string>, std::vector<int>> by_name;
+  for (int dim : {1, 2}) {
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups, dim);
+    for (const auto& [d, tag] : groups) {
+      std::string name;
+      gmsh::model::getPhysicalName(d, tag, name);
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(d, tag, entities);
+      auto& all = by_name[{d, name}];
+      all.insert(all.end(), entities.begin(), entities.end());
+    }
+  }
+  std::vector<RawGroup> out;
+  for (auto& [key, entities] : by_name) out.push_back({key.first, key.second, std::move(entities)});
+  return out;
+}
+
+// What the parent must see to refuse a file Gmsh repaired silently.
+std::vector<std::string> notable_log() {
+  std::vector<std::string> all, out;
+  gmsh::logger::get(all);
+  for (auto& line : all) {
+    const bool notable = line.rfind("Warning", 0) == 0 || line.rfind("Error", 0) == 0 ||
+                         line.find("Skipping") != std::string::npos;
+    if (notable && out.size() < 50) out.push_back(line.substr(0, 300));
+  }
+  return out;
+}
+
+}  // namespace
+
+void initialise_gmsh_once() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    try {
+      gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+      gmsh::option::setNumber("General.Terminal", 0);
+    } catch (const std::string& what) {  // Gmsh 4.8 throws its errors as std::string
+      throw MeshError("cannot initialise Gmsh: " + what);
+    }
+  });
+}
+
+RawMesh mesh_structure_in_gmsh(const StructureGeometry& g) {
+  configure_gmsh(0);
+  namespace geo = gmsh::model::geo;
+  gmsh::model::add("structure");
+  const double h = g.h;
+  // Bottom side split at the ends of Γ_C so that vertices sit exactly there.
+  const int p0 = geo::addPoint(0, 0, 0, h), pc0 = geo::addPoint(g.xc_min, 0, 0, h),
+            pc1 = geo::addPoint(g.xc_max, 0, 0, h), p1 = geo::addPoint(g.L, 0, 0, h),
+            p2 = geo::addPoint(g.L, g.H, 0, h), p3 = geo::addPoint(0, g.H, 0, h);
+  const int bottom_left = geo::addLine(p0, pc0), contact = geo::addLine(pc0, pc1),
+            bottom_right = geo::addLine(pc1, p1), right = geo::addLine(p1, p2),
+            top = geo::addLine(p2, p3), left = geo::addLine(p3, p0);
+  const int loop = geo::addCurveLoop({bottom_left, contact, bottom_right, right, top, left});
+  const int surface = geo::addPlaneSurface({loop});
+  geo::synchronize();
+  mesh_2d(h);
+  return extract({{2, "Omega_S", {surface}},
+                  {1, "Gamma_D", {left}},
+                  {1, "Gamma_C", {contact}},
+                  {1, "Gamma_N", {bottom_left, bottom_right, right, top}}});
+}
+
+RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
+  configure_gmsh(0);
+  namespace geo = gmsh::model::geo;
+  gmsh::model::add("fluid");
+  const double h = g.h;
+  const int a = geo::addPoint(0, -g.H2, 0, h), b = geo::addPoint(g.L1, -g.H2, 0, h),
+            c = geo::addPoint(g.L1, g.H1, 0, h), d = geo::addPoint(0, g.H1, 0, h);
+  const int bottom = geo::addLine(a, b), right = geo::addLine(b, c), top = geo::addLine(c, d),
+            left = geo::addLine(d, a);
+  const int centre = geo::addPoint(g.x0, g.y0, 0, h);
+  const int e = geo::addPoint(g.x0 + g.r, g.y0, 0, h), n = geo::addPoint(g.x0, g.y0 + g.r, 0, h),
+            w = geo::addPoint(g.x0 - g.r, g.y0, 0, h), s = geo::addPoint(g.x0, g.y0 - g.r, 0, h);
+  const std::vector<int> arcs = {geo::addCircleArc(e, centre, n), geo::addCircleArc(n, centre, w),
+                                 geo::addCircleArc(w, centre, s), geo::addCircleArc(s, centre, e)};
+  const int outer = geo::addCurveLoop({bottom, right, top, left});
+  const int hole = geo::addCurveLoop(arcs);
+  const int surface = geo::addPlaneSurface({outer, hole});
+  geo::synchronize();
+  mesh_2d(h);
+  return extract({{2, "D", {surface}},
+                  {1, "Sigma_1", {left}},
+                  {1, "Sigma_2", {bottom}},
+                  {1, "Sigma_3", {right}},
+                  {1, "Sigma_4", {top}},
+                  {1, "Sigma_5", arcs}});
+}
+
+RawMesh read_in_gmsh(const std::string& path) {
+  configure_gmsh(5);  // 5: the "Skipping duplicate node" notes are at the info level
+  gmsh::logger::start();
+  gmsh::open(path);
+  RawMesh raw = extract(physical_groups());
+  raw.log = notable_log();
+  return raw;
+}
+
+}  // namespace fsi
