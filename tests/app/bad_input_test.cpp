@@ -42,6 +42,10 @@ struct BadInput {
   std::vector<std::pair<std::string, std::string>> files = {};  // more files: name, text
 };
 
+std::string defect(const std::string& name) {
+  return testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/tests/data/fuzz-msh/" + name + ".msh");
+}
+
 std::string shipped(const std::string& name) {
   return testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/cases/meshes/" + name);
 }
@@ -151,6 +155,15 @@ std::vector<BadInput> bad_inputs() {
       {"fluid_mesh_obstacle_elsewhere", kBoxCase, "--set obstacle.r=0.04", {"obstacle.r = 0.04 contradicts fluid.mesh", "Sigma_5"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
       {"fluid_mesh_inflow_label_at_the_bottom", kBoxCase, "", {"fluid.mesh", "Sigma_4", "not on the top"},
        {{"box.msh", replace(replace(replace(shipped("paper-7.2-box-h0.02.msh"), "1 2 \"Sigma_2\"", "1 2 \"Sigma_X\""), "1 4 \"Sigma_4\"", "1 4 \"Sigma_2\""), "1 2 \"Sigma_X\"", "1 2 \"Sigma_4\"")}}},
+      // A user's .msh with a defect that used to pass silently (class 6): exit 2
+      // naming the file and the defect (tests/mesh/ has one test per defect).
+      {"mesh_tangled", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "m.msh", "tangled"}, {{"m.msh", defect("tangled")}}},
+      {"mesh_duplicate_node_tag", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "node tag 3 is defined twice"}, {{"m.msh", defect("duplicate-node")}}},
+      {"mesh_without_the_domain_group", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "'Omega_S'"}, {{"m.msh", defect("no-domain-group")}}},
+      {"mesh_second_order", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "6-node triangles"}, {{"m.msh", defect("second-order-triangle")}}},
+      {"mesh_zero_area", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "zero area"}, {{"m.msh", defect("zero-area")}}},
+      {"mesh_is_a_script", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "not a Gmsh mesh file"}, {{"m.msh", "SystemCall \"touch pwned\";\n"}}},
+      {"mesh_is_a_case_file", replace(kValid, "h = 0.0014", "mesh = \"case.toml\""), "", {"structure.mesh", "case.toml"}},
       {"structure_mesh_with_a_floating_part", replace(replace(kValid, "h = 0.0014", "mesh = \"floating.msh\""), "x0 = 0.055", "x0 = 0.015"), "", {"structure.mesh floating.msh", "not connected to Gamma_D"}, {{"floating.msh", floating_block_msh()}}},
       {"structure_mesh_longer_than_L", replace(replace(kValid, "h = 0.0014", "mesh = \"beam.msh\""), "L = 0.06", "L = 0.07"), "", {"structure.L = 0.07 contradicts structure.mesh", "0.06"}, {{"beam.msh", shipped("paper-7.1-beam.msh")}}},
   };
