@@ -39,7 +39,7 @@ fuzz-smoke: fuzz-build
 fuzz: fuzz-build
 	@mkdir -p build-fuzz/long-case build-fuzz/long-msh build-fuzz/long-cli
 	ASAN_OPTIONS=detect_leaks=1 $(FUZZ_LSAN) build-fuzz/fuzz_case -runs=$(FUZZ_RUNS) -max_len=4096 -timeout=60 build-fuzz/long-case cases tests/data/fuzz-regressions
-	ASAN_OPTIONS=detect_leaks=0 build-fuzz/fuzz_msh -runs=$(FUZZ_RUNS) -max_len=20000 -timeout=60 build-fuzz/long-msh cases/meshes
+	ASAN_OPTIONS=detect_leaks=1 $(FUZZ_LSAN) build-fuzz/fuzz_msh -runs=$(FUZZ_RUNS) -max_len=20000 -timeout=60 build-fuzz/long-msh cases/meshes tests/data/fuzz-msh
 	ASAN_OPTIONS=detect_leaks=1 $(FUZZ_LSAN) build-fuzz/fuzz_cli -runs=$(FUZZ_RUNS) -max_len=65536 -timeout=60 \
 	  -artifact_prefix=$(CURDIR)/build-fuzz/ $(CURDIR)/build-fuzz/long-cli $(CURDIR)/fuzz/seeds/cli
 
