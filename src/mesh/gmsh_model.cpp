@@ -38,11 +38,11 @@ void add_elements(RawMesh& raw, int dim, int entity) {
   std::vector<std::vector<std::size_t>> tags, nodes;
   gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
   for (std::size_t k = 0; k < types.size(); ++k) {
-    std::string name;
-    int type_dim, order, num_nodes, num_primary;
-    std::vector<double> local;
-    gmsh::model::mesh::getElementProperties(types[k], name, type_dim, order, num_nodes, local,
-                                            num_primary);
+    // Nodes per element from the lists themselves, not getElementProperties: that call
+    // builds Gmsh's polynomial bases with Eigen, whose inline functions resolve to our
+    // executable's instantiations, and under AddressSanitizer (handmade aligned
+    // malloc) Gmsh then freed our allocation with free(): "bad-free" in every child.
+    const int num_nodes = tags[k].empty() ? 0 : static_cast<int>(nodes[k].size() / tags[k].size());
     raw.elements.push_back(
         {dim, entity, types[k], num_nodes, std::move(tags[k]), std::move(nodes[k])});
   }
