@@ -44,13 +44,11 @@ fuzz: fuzz-build
 	  -artifact_prefix=$(CURDIR)/build-fuzz/ $(CURDIR)/build-fuzz/long-cli $(CURDIR)/fuzz/seeds/cli
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
-# allocator_may_return_null: an allocation beyond a limit throws std::bad_alloc, as
-# it does without ASan (the tests of lying mesh headers and of memory caps expect it).
 test-sanitize: deps
 	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFSICONTACT_SANITIZE=ON \
 	  -DFSICONTACT_BUILD_BENCH=OFF > /dev/null
 	@cmake --build build-sanitize -j $(JOBS)
-	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1 \
+	@cd build-sanitize && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j $(JOBS)
 
