@@ -19,6 +19,14 @@ FixedPointCoupling::FixedPointCoupling(Parts parts, double tol, int max_iteratio
 
 std::string convergence_warning(const CouplingResult& r, double tol) {
   const std::size_t n = r.history.size();
+  if (r.converged && r.final_norm > 0 && r.final_increment > 0.1 * r.final_norm) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the stop says little: the last increment %.2e is %.0f%% of the displacement's own L2 norm "
+                  "%.2e, so tol %g is coarse for this problem's scale; a smaller coupling.tol",
+                  r.final_increment, 100 * r.final_increment / r.final_norm, r.final_norm, tol);
+    return text;
+  }
   if (!r.converged || n < 11) return "";
   std::vector<double> previous;
   for (std::size_t i = n - 11; i + 1 < n; ++i) previous.push_back(r.history[i].increment);
@@ -153,6 +161,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     if (!std::isfinite(rec.increment)) fail("the stopping test", "the increment is not a finite number");
     rec.active_nodes = result.structure.qp.active_count();
     result.final_increment = rec.increment;
+    result.final_norm = std::sqrt(result.structure.u.dot(M_ * result.structure.u));
     const bool converged = rec.increment < tol_;
     result.history.push_back(rec);  // recorded before relaxing: kept if that fails
     if (!converged && k < max_iterations_) {

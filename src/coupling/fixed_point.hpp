@@ -32,6 +32,7 @@ struct CouplingResult {
   bool converged = false;
   int iterations = 0;
   double final_increment = 0;
+  double final_norm = 0;       // ‖ũ‖_{L²(Ω_S0)} of the last ũ, the scale of the increment
   ContactSolution structure;   // the last ũ (the solution if converged)
   std::vector<IterationRecord> history;
   int projections = 0;         // infeasible accelerated updates projected back
@@ -45,8 +46,11 @@ struct CouplingResult {
 // ε = 1e-6, constant ω: increments wander between 2e-4 and 4e-3 for 88 passes, then
 // one falls to 8e-5). The SPEC's stopping test is kept; this names such a stop: the
 // ten increments before the last had a median above 5·tol AND the last is below a
-// tenth of the largest of the three before it (an abrupt fall, not a trend). Empty
-// if not the case.
+// tenth of the largest of the three before it (an abrupt fall, not a trend).
+// It also names a stop that says nothing about convergence: the last increment more
+// than a tenth of ‖ũ‖ itself, so that tol (absolute, m²) was coarse for the problem's
+// scale (a beam scaled to 3e-13 m "converged" in its first pass, whose increment is
+// the whole displacement). Empty if neither.
 std::string convergence_warning(const CouplingResult& r, double tol);
 
 class FixedPointCoupling {

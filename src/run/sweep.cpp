@@ -1,7 +1,6 @@
 #include "run/sweep.hpp"
 
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <set>

@@ -51,5 +51,19 @@ TEST(ConvergenceWarning, SilentWhenNotConvergedOrShort) {
   EXPECT_EQ(convergence_warning(converged_with({3e-3, 5e-5}), 1e-4), "");
 }
 
+// A tolerance coarse for the problem's scale: the §7.2 case scaled by 1e-12 stopped
+// in its first pass (increment 6e-19 against tol 1e-4), the increment being the whole
+// displacement. The paper's rows stop at ~2% of ‖ũ‖: no warning.
+TEST(ConvergenceWarning, NamesAStopWhoseIncrementIsTheDisplacementItself) {
+  CouplingResult first_pass = converged_with({6e-19});
+  first_pass.final_increment = 6e-19;
+  first_pass.final_norm = 6e-19;
+  EXPECT_NE(convergence_warning(first_pass, 1e-4).find("coarse for this problem's scale"), std::string::npos);
+  CouplingResult paper = converged_with({2e-3, 1e-3, 5e-4, 9.1e-5});
+  paper.final_increment = 9.1e-5;
+  paper.final_norm = 4.6e-3;
+  EXPECT_EQ(convergence_warning(paper, 1e-4), "");
+}
+
 }  // namespace
 }  // namespace fsi
