@@ -16,16 +16,8 @@ Mesh build_fluid_mesh(const Case& c) {
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
     }
   }
-  Mesh mesh;
-  try {
-    mesh = read_gmsh_file(f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D");
-  } catch (const MeshError& e) {
-    throw InputError(c.source + ": fluid.mesh: " + e.what());
-  }
-  if (mesh.num_triangles() > case_limits().fluid_triangles)
-    throw InputError(c.source + ": fluid.mesh: " + f.mesh + " has " + std::to_string(mesh.num_triangles()) +
-                     " triangles; allowed: at most " + std::to_string(static_cast<long>(case_limits().fluid_triangles)));
-  return mesh;
+  return read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D",
+                        case_limits().fluid_triangles);
 }
 
 Mesh make_fluid_mesh(const Case& c) {

@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "mesh/gmsh_io.hpp"
 #include "solid/obstacle.hpp"
 
 namespace fsi {
@@ -122,6 +123,20 @@ void check_inside_box(const Case& c, const Mesh& mesh, const std::string& what) 
 }
 
 }  // namespace
+
+Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
+                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles) {
+  Mesh mesh;
+  try {
+    mesh = read_gmsh_file(path, curves, surface);
+  } catch (const MeshError& e) {
+    throw InputError(c.source + ": " + key + ": " + e.what());
+  }
+  if (mesh.num_triangles() > max_triangles)
+    throw InputError(c.source + ": " + key + ": " + path + " has " + std::to_string(mesh.num_triangles()) +
+                     " triangles; allowed: at most " + std::to_string(static_cast<long>(max_triangles)));
+  return mesh;
+}
 
 std::array<int, 2> unlabelled_boundary_edge(const Mesh& mesh) {
   std::map<std::pair<int, int>, int> uses;

@@ -7,7 +7,16 @@
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 
+#include <string>
+#include <vector>
+
 namespace fsi {
+
+// A user's mesh file given by `key` ("structure.mesh", "fluid.mesh"): read with its
+// boundary curves and domain surface; a bad file, or one over `max_triangles`, is an
+// InputError naming the case file and the key.
+Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
+                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles);
 
 // The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
 // vertex strictly inside it (else no contact row exists), every part joined to Γ_D

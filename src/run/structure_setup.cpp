@@ -23,16 +23,8 @@ Mesh build_structure_mesh(const Case& c) {
       throw SolverFailure(std::string("meshing the structure failed: ") + e.what());
     }
   }
-  Mesh mesh;
-  try {
-    mesh = read_gmsh_file(s.mesh, {"Gamma_D", "Gamma_C", "Gamma_N"}, "Omega_S");
-  } catch (const MeshError& e) {
-    throw InputError(c.source + ": structure.mesh: " + e.what());
-  }
-  if (mesh.num_triangles() > case_limits().structure_triangles)
-    throw InputError(c.source + ": structure.mesh: " + s.mesh + " has " + std::to_string(mesh.num_triangles()) +
-                     " triangles; allowed: at most " + std::to_string(static_cast<long>(case_limits().structure_triangles)));
-  return mesh;
+  return read_case_mesh(c, "structure.mesh", s.mesh, {"Gamma_D", "Gamma_C", "Gamma_N"}, "Omega_S",
+                        case_limits().structure_triangles);
 }
 
 Mesh make_structure_mesh(const Case& c) {
