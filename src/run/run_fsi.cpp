@@ -77,7 +77,13 @@ double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const
 CouplingResult solve_fluid_alone(StructureSetup& s, FluidSetup& f, PhaseTimes& times) {
   const Stopwatch clock;
   f.stokes->set_chi((*f.chi)(s.mesh()));
-  const FluidSolution& v = f.stokes->solve();
+  const FluidSolution* solved = nullptr;
+  try {
+    solved = &f.stokes->solve();
+  } catch (const SolverFailure& e) {  // named by its phase, as the coupling names its own
+    throw SolverFailure(std::string("the fluid solve failed: ") + e.what());
+  }
+  const FluidSolution& v = *solved;
   if (!v.v1.allFinite() || !v.v2.allFinite() || !v.p.allFinite() || !v.bubble.allFinite())
     throw SolverFailure("the fluid solve gave a non-finite velocity or pressure");
   times.add("fluid", clock.elapsed());
