@@ -1,5 +1,6 @@
 #include "io/case.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -106,6 +107,26 @@ class Section {
       fail(origin_, full(key), "= [" + shortest(v.x()) + ", " + shortest(v.y()) + "] is out of range", allowed);
     return v;
   }
+  // A width (a number, m) or a box [x_min, y_min, x_max, y_max].
+  void band(const std::string& key, double& width, std::optional<std::array<double, 4>>& box) {
+    const toml::node* n = find(key);
+    if (!n) return;
+    const std::string allowed = "a width in [1e-30, 1e30] m, or a box [x_min, y_min, x_max, y_max] with x_min < x_max, y_min < y_max";
+    if (n->is_number()) {
+      width = number(key, width, kSize);
+      return;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 4) fail(origin_, full(key), "must be a number or an array of four numbers", allowed);
+    std::array<double, 4> b{};
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (!(*a)[i].is_number()) fail(origin_, full(key), "must be a number or an array of four numbers", allowed);
+      b[i] = as_double((*a)[i]);
+      if (!kSigned.contains(b[i])) fail(origin_, full(key), "has " + shortest(b[i]) + ", out of range", allowed);
+    }
+    if (!(b[0] < b[2] && b[1] < b[3])) fail(origin_, full(key), "is an empty box", allowed);
+    box = b;
+  }
   void reject_unknown() const {
     if (!table_) return;
     for (auto&& [k, v] : *table_) {
@@ -138,6 +159,20 @@ const toml::table* section_table(const toml::table& root, const std::string& nam
   if (!n->is_table()) fail(origin, name, "must be a table ([" + name + "])", "");
   return n->as_table();
 }
+
+}  // namespace
+
+// "fixed" → 0; "h^p" → p for 0 < p <= 4; anything else: none.
+std::optional<double> eps_rule_power(const std::string& rule) {
+  if (rule == "fixed") return 0.0;
+  if (rule.size() < 3 || rule.compare(0, 2, "h^") != 0) return std::nullopt;
+  double p = 0;
+  const auto [end, ec] = std::from_chars(rule.data() + 2, rule.data() + rule.size(), p);
+  if (ec != std::errc{} || end != rule.data() + rule.size() || !(p > 0 && p <= 4)) return std::nullopt;
+  return p;
+}
+
+namespace {
 
 [[noreturn]] void bad_override(const std::string& text) {
   throw InputError("--set " + text + ": expected section.key=value (for example coupling.omega=0.2)");
@@ -237,6 +272,12 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
   p.factorization = s.choice("factorization", p.factorization, {"schur", "whole"});
   p.keep_far_factors_mb = s.number("keep_far_factors_mb", p.keep_far_factors_mb, kNonNegative);
+  p.h_near = s.number("h_near", p.h_near, {0, kMaxMagnitude, true, true});
+  if (p.h_near != 0 && !(p.h_near >= kMinMagnitude && p.h_near <= p.h))
+    fail(origin, "fluid.h_near", "= " + shortest(p.h_near) + " is out of range",
+         "0 (no band) or [1e-30, fluid.h = " + shortest(p.h) + "]");
+  s.band("band", p.band, p.band_box);
+  p.method = s.choice("method", p.method, {"penalised", "body-fitted"});
   s.reject_unknown();
   c.fluid = p;
 }
@@ -252,6 +293,10 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   p.tol = s.number("tol", p.tol, kSize);
   p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, case_limits().max_iterations);
   p.scheme = s.choice("scheme", p.scheme, {"constant", "aitken", "iqn-ils"});
+  p.eps_rule = s.text("eps_rule", p.eps_rule);
+  if (!eps_rule_power(p.eps_rule))
+    fail(origin, "coupling.eps_rule", "= \"" + p.eps_rule + "\" is not a known rule",
+         "\"fixed\", or \"h^p\" with 0 < p <= 4 (for example \"h^2\")");
   s.reject_unknown();
 }
 
@@ -348,6 +393,8 @@ Case load_case_text(const std::string& text, const std::string& origin_name, con
   return read_with_overrides(root, origin, "", /*has_fluid_default=*/false, overrides, out_dir);
 }
 
+double CouplingParams::eps_power() const { return eps_rule_power(eps_rule).value_or(0.0); }
+
 CaseLimits& case_limits() {
   static CaseLimits limits;
   return limits;
@@ -374,13 +421,16 @@ std::string to_toml(const Case& c) {
     const auto& f = *c.fluid;
     toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},
                    {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
-                   {"keep_far_factors_mb", f.keep_far_factors_mb}};
+                   {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method}};
+    if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
+    else ft.insert("band", f.band);
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
     t.insert("fluid", ft);
   }
   const auto& k = c.coupling;
   t.insert("coupling", toml::table{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol},
-                                   {"max_iterations", k.max_iterations}, {"scheme", k.scheme}});
+                                   {"max_iterations", k.max_iterations}, {"scheme", k.scheme},
+                                   {"eps_rule", k.eps_rule}});
   t.insert("contact", toml::table{{"solver", c.contact.solver}});
   t.insert("output", toml::table{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}});
   std::ostringstream out;

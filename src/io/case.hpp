@@ -2,6 +2,7 @@
 // §7.2 values; a case file without a [fluid] section is the contact-only problem.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,18 @@ struct FluidParams {
   // MUMPS's figure) are not kept between expansions, each expansion refactorises
   // them (one more far-field factorisation per run for about half the peak memory).
   double keep_far_factors_mb = 128;
+  // Refinement where the structure goes: triangles of size h_near inside a band of
+  // width `band` around the structure at rest and at its load-alone contact solution
+  // (or inside band_box, [x_min, y_min, x_max, y_max], if given), hF elsewhere, through
+  // a Gmsh size field. 0: no band, hF everywhere (the paper's meshes).
+  double h_near = 0;
+  double band = 0.02;
+  std::optional<std::array<double, 4>> band_box;
+  // "penalised": the fictitious domain of §3 (the paper); "body-fitted": D minus the
+  // deformed structure, remeshed each fixed-point pass, no-slip on the structure and
+  // its traction as the load: an independent check for configurations without contact.
+  std::string method = "penalised";
+  double size_near() const { return h_near > 0 ? h_near : h; }  // the size at the structure
 };
 
 struct CouplingParams {
@@ -49,6 +62,11 @@ struct CouplingParams {
   double tol = 1.0e-4;
   int max_iterations = 100;
   std::string scheme = "constant";  // "constant" | "aitken" | "iqn-ils"
+  // How ε follows the mesh in a refinement study (fsicontact converge): "fixed" (the
+  // case's ε on every level) or "h^p" (ε · (h/h₀)^p, h the fluid size at the
+  // structure, h₀ the case's own). A single run uses ε as given either way.
+  std::string eps_rule = "fixed";
+  double eps_power() const;  // p of "h^p"; 0 for "fixed"
 };
 
 struct ContactParams {
@@ -86,6 +104,9 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 // resolve against the current directory.
 Case load_case_text(const std::string& text, const std::string& origin,
                     const std::vector<std::string>& overrides = {}, const std::string& out_dir = "");
+
+// The p of coupling.eps_rule "h^p" (0 for "fixed"); none if the rule is not known.
+std::optional<double> eps_rule_power(const std::string& rule);
 
 // Every key a case may set ("name", "structure.L", ...), in the order they are read.
 std::vector<std::string> case_keys();

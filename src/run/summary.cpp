@@ -24,12 +24,13 @@ Json to_json(const ObstacleParams& o) {
 Json to_json(const FluidParams& f) {
   return {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},   {"f", vec(f.f)},
           {"Vmax", f.Vmax}, {"h", f.h},   {"mesh", f.mesh}, {"chi", f.chi}, {"factorization", f.factorization},
-          {"keep_far_factors_mb", f.keep_far_factors_mb}};
+          {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
+          {"band", f.band_box ? Json(*f.band_box) : Json(f.band)}, {"method", f.method}};
 }
 
 Json to_json(const CouplingParams& k) {
   return {{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
-          {"scheme", k.scheme}};
+          {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};
 }
 
 Json to_json(const ContactParams& c) { return {{"solver", c.solver}}; }

@@ -136,6 +136,11 @@ std::vector<BadInput> bad_inputs() {
       {"vmax_overflow", kValid + "[fluid]\nVmax = 1e31\n", "", {"fluid.Vmax", "0 or a magnitude"}},
       {"thin_structure", kValid, "--set structure.H=1e-12", {"structure.h = 0.0014", "10 * structure.H", "from --set structure.H"}},
       {"fluid_too_strong_for_the_structure", kValid + "[fluid]\nh = 0.004\n", "--set structure.E=1e-5 --set structure.f=[0,0]", {"structure.E", "fluid's stresses"}},
+      {"h_near_above_h", kValid + "[fluid]\nh = 0.004\nh_near = 0.005\n", "", {"fluid.h_near = 0.005", "fluid.h = 0.004"}},
+      {"band_not_a_box", kValid + "[fluid]\nh = 0.004\nband = [0, 0, 1]\n", "", {"fluid.band", "four numbers"}},
+      {"band_box_empty", kValid + "[fluid]\nh = 0.004\nband = [0.1, 0, 0.05, 0.1]\n", "", {"fluid.band", "empty box"}},
+      {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
+      {"method_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=immersed", {"fluid.method", "body-fitted"}},
       {"omega_just_above_one", kValid + "[fluid]\n", "--set coupling.omega=1.0000001", {"coupling.omega = 1.0000001 is out of range", "(0, 1]"}},
       // Geometry that passed and then died in meshing (class 4).
       {"gamma_c_a_rounding_error_from_the_end", replace(replace(kValid, "r = 0.005", "r = 0.00625"), "gamma = 0.8", "gamma = 0.79999999999999"), "", {"obstacle.x0", "Gamma_C", "structure.h/20", "from the structure's end"}},

@@ -64,6 +64,20 @@ TEST(Case, OverridesTakeTomlValuesOrBareWords) {
   EXPECT_FALSE(c.output.png);
 }
 
+TEST(Case, TheBandIsAWidthOrABoxAndEpsRulesHaveAPower) {
+  const Case width = load_case("", {"fluid.h_near=0.002", "fluid.band=0.03", "coupling.eps_rule=h^1.5"});
+  EXPECT_EQ(width.fluid->h_near, 0.002);
+  EXPECT_EQ(width.fluid->band, 0.03);
+  EXPECT_FALSE(width.fluid->band_box);
+  EXPECT_EQ(width.coupling.eps_power(), 1.5);
+  const Case box = load_case("", {"fluid.band=[0, -0.06, 0.33, 0.05]"});
+  ASSERT_TRUE(box.fluid->band_box);
+  EXPECT_EQ((*box.fluid->band_box)[3], 0.05);
+  EXPECT_EQ(box.coupling.eps_power(), 0.0);
+  EXPECT_EQ(box.fluid->size_near(), box.fluid->h);  // no band: hF at the structure
+  for (const Case& c : {width, box}) EXPECT_EQ(to_toml(load_case_text(to_toml(c), "again.toml")), to_toml(c));
+}
+
 TEST(Case, IntegersAreAcceptedForRealKeys) {
   const Case c = load_case("", {"structure.E=300000", "fluid.Vmax=8"});
   EXPECT_EQ(c.structure.E, 3e5);

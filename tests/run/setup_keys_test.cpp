@@ -21,7 +21,8 @@ std::string other_value(const std::string& key) {
       {"structure.h_N", "[1, 2]"}, {"fluid.mesh", "b.msh"},          {"fluid.f", "[1, -2]"},
       {"fluid.chi", "area-fraction"}, {"fluid.factorization", "whole"}, {"coupling.max_iterations", "7"},
       {"coupling.scheme", "aitken"},  {"contact.solver", "ipopt"},    {"output.dir", "elsewhere"},
-      {"output.png", "false"},    {"output.vtu", "false"}};
+      {"output.png", "false"},    {"output.vtu", "false"},            {"fluid.h_near", "0.005"},
+      {"fluid.method", "body-fitted"}, {"coupling.eps_rule", "h^2"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
