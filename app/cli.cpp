@@ -7,6 +7,7 @@
 #include "io/case.hpp"
 #include "run/run_case.hpp"
 #include "run/sweep.hpp"
+#include "study/converge.hpp"
 
 namespace fsi {
 namespace {
@@ -43,6 +44,35 @@ int sweep_command(const std::string& case_path, const std::string& rows, const s
   return r.exit_status();
 }
 
+// --schemes "all" | a comma-separated list.
+std::vector<std::string> scheme_list(const std::string& text) {
+  if (text.empty()) return {};
+  if (text == "all") return {"constant", "aitken", "iqn-ils"};
+  std::vector<std::string> list;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    list.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return list;
+}
+
+int converge_command(const std::string& case_path, const std::vector<std::string>& sets, const std::string& out_dir,
+                     int levels, double ratio, const std::string& schemes, bool quiet, Streams io) {
+  ConvergeOptions options;
+  options.overrides = sets;
+  options.out_dir = out_dir;
+  options.levels = levels;
+  options.ratio = ratio;
+  options.schemes = scheme_list(schemes);
+  if (!quiet) options.progress = [&io](const std::string& line) { io.err << line << '\n'; };
+  const ConvergeResult r = run_convergence(case_path, options);
+  io.out << r.report << "\nResults in " << r.out_dir << "/ (convergence.md, convergence.csv, convergence.png, "
+         << "summary.json; one directory per level)." << std::endl;
+  return r.exit_status;
+}
+
 }  // namespace
 
 int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -65,6 +95,20 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   sweep->add_option("--out", out_dir, "output directory (default out/<name>-sweep)");
   sweep->add_flag("--keep-outputs", keep_outputs, "write each row's .vtu and .png too");
   sweep->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  std::string converge_case, schemes;
+  int levels = 3;
+  double ratio = 2;
+  CLI::App* converge = app.add_subcommand(
+      "converge", "run a case on refined levels: observed order, Richardson extrapolation and GCI per quantity");
+  converge->add_option("case", converge_case, "case file (TOML)")->required();
+  converge->add_option("--levels", levels, "number of levels, the case itself the coarsest (3 to 10; default 3)");
+  converge->add_option("--ratio", ratio, "size ratio between consecutive levels (default 2)");
+  converge->add_option("--schemes", schemes,
+                       "coupling schemes run at every level, the first gives the values: a list "
+                       "(constant,aitken,iqn-ils) or all (default: the case's own)");
+  converge->add_option("--set", sets, "override a key on every level: section.key=value")->type_name("KEY=VALUE");
+  converge->add_option("--out", out_dir, "output directory (default out/<name>-converge)");
+  converge->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -78,6 +122,7 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   const Streams io{out, err};
   try {
     if (sweep->parsed()) return sweep_command(sweep_case, sweep_rows, sets, out_dir, keep_outputs, quiet, io);
+    if (converge->parsed()) return converge_command(converge_case, sets, out_dir, levels, ratio, schemes, quiet, io);
     return run_command(case_path, sets, out_dir, quiet, io);
   } catch (const InputError& e) {
     err << "fsicontact: error: " << e.what() << std::endl;

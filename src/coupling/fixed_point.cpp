@@ -154,6 +154,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
           guarded("the contact QP", k, [&] { return p_.structure.solve(b_S, warm); });
       if (!next.u.allFinite()) fail("the contact QP", "non-finite displacement");
       result.structure = std::move(next);  // only a good state replaces the last one
+      result.fluid_load = b_S - p_.b_applied;
       rec.t_structure = clock.elapsed();
     }
     const Eigen::VectorXd d = result.structure.u - u;  // step 5

@@ -34,6 +34,7 @@ struct CouplingResult {
   double final_increment = 0;
   double final_norm = 0;       // ‖ũ‖_{L²(Ω_S0)} of the last ũ, the scale of the increment
   ContactSolution structure;   // the last ũ (the solution if converged)
+  Eigen::VectorXd fluid_load;  // eq. (33)'s fluid terms that produced `structure` (empty before)
   std::vector<IterationRecord> history;
   int projections = 0;         // infeasible accelerated updates projected back
   // Set when the loop stopped early: a solve failed (the message names the phase and

@@ -1,5 +1,6 @@
 #include "run/output_dir.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "common/errors.hpp"
@@ -10,7 +11,8 @@ namespace fsi {
 const std::vector<std::string>& output_file_names() {
   static const std::vector<std::string> names = {"summary.json", "case.toml",     "history.csv",  "fluid.vtu",
                                                  "structure.vtu", "fsi.pvd",      "fsi.png",      "fluid.png",
-                                                 "structure.png", "table.md",     "table.csv"};
+                                                 "structure.png", "table.md",     "table.csv",
+                                                 "convergence.csv", "convergence.md", "convergence.png"};
   return names;
 }
 
@@ -25,6 +27,22 @@ void remove_stale_outputs(const std::string& dir, const std::string& keep) {
   }
   for (const auto& p : stale)
     if (!fs::is_directory(fs::symlink_status(p, ec))) fs::remove(p, ec);
+}
+
+void remove_stale_subdirs(const std::string& dir, const std::string& prefix, const std::vector<std::string>& keep) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && std::find(keep.begin(), keep.end(), name) == keep.end() &&
+        fs::is_directory(fs::symlink_status(it->path(), ec)))
+      stale.push_back(it->path());
+  }
+  for (const auto& p : stale) {
+    remove_stale_outputs(p.string());
+    fs::remove(p, ec);  // only if now empty
+  }
 }
 
 void RunOutputs::begin(Json header) {

@@ -23,6 +23,11 @@ const std::vector<std::string>& output_file_names();
 // temporaries; nothing else (a user's own files stay).
 void remove_stale_outputs(const std::string& dir, const std::string& keep = "");
 
+// Subdirectories of `dir` named `prefix`… (an earlier sweep's row-NN, an earlier
+// study's level-N) that are not in `keep`: their files of ours removed, then the
+// directory itself if that left it empty (a user's own files stay).
+void remove_stale_subdirs(const std::string& dir, const std::string& prefix, const std::vector<std::string>& keep);
+
 class RunOutputs {
  public:
   explicit RunOutputs(std::string dir) : dir_(std::move(dir)) {}

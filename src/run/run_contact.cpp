@@ -7,6 +7,7 @@
 #include "common/fault.hpp"
 #include "io/atomic_file.hpp"
 #include "run/output_dir.hpp"
+#include "run/probes.hpp"
 #include "run/run_case.hpp"
 #include "run/structure_outputs.hpp"
 #include "run/structure_setup.hpp"
@@ -78,6 +79,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   j["qp_status"] = solution.qp.status;
   j["max_displacement"] = max_u;
   j["min_displacement_y"] = u2.minCoeff();
+  j["tip_displacement"] = point_json(displacement_at(s.mesh(), solution.u, tip_of(c)));
   j["contact"] = to_json(contact);
   j["kkt"] = to_json(solution.qp.kkt);
   r.report = contact_report(c, stats, s, solution, contact, max_u, u2.minCoeff());

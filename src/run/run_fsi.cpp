@@ -15,6 +15,7 @@
 #include "run/fluid_outputs.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/output_dir.hpp"
+#include "run/probes.hpp"
 #include "run/run_case.hpp"
 #include "run/setup_cache.hpp"
 #include "run/structure_outputs.hpp"
@@ -73,8 +74,15 @@ double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const
   return velocity_l2_over(field, region);
 }
 
-// The fluid alone around the structure at rest: one solve.
-CouplingResult solve_fluid_alone(StructureSetup& s, FluidSetup& f, PhaseTimes& times) {
+// eq. (33)'s fluid terms, with the case's fluid and ε, on the reference mesh.
+FluidForce fluid_force_of(const Case& c, const Mesh& reference) {
+  const Point f_F = c.fluid->f;
+  return FluidForce(reference, c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; });
+}
+
+// The fluid alone around the structure at rest: one solve, and its force on the
+// structure (eq. 33 at u = 0).
+CouplingResult solve_fluid_alone(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTimes& times) {
   const Stopwatch clock;
   f.stokes->set_chi((*f.chi)(s.mesh()));
   const FluidSolution* solved = nullptr;
@@ -90,14 +98,15 @@ CouplingResult solve_fluid_alone(StructureSetup& s, FluidSetup& f, PhaseTimes& t
   CouplingResult result;
   result.structure = s.solver->at_rest();
   result.converged = true;
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(2 * s.mesh().num_vertices());
+  result.fluid_load = fluid_force_of(c, s.mesh())(sample_at_deformed_vertices(FluidField(*f.locator, v), s.mesh(), rest), rest);
   return result;
 }
 
 CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTimes& times,
                       const std::function<void(const std::string&)>& progress) {
-  const Point f_F = c.fluid->f;
   const Mesh& ref = s.mesh();
-  const FluidForce force(ref, c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; });
+  const FluidForce force = fluid_force_of(c, ref);
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, assemble_vector_mass(ref));
   FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force, *relaxation},
                           c.coupling.tol, c.coupling.max_iterations);
@@ -211,7 +220,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   auto progress = [&options](const std::string& line) {
     if (options.progress) options.progress(line);
   };
-  CouplingResult result = fluid_only ? solve_fluid_alone(s, f, times) : couple(c, s, f, times, progress);
+  CouplingResult result = fluid_only ? solve_fluid_alone(c, s, f, times) : couple(c, s, f, times, progress);
 
   // The final state: ũ (the solution if converged; after a failure the last good
   // one) and the last successful fluid solution.
@@ -247,6 +256,8 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["fluid_velocity_l2_on_chi"] = norms.v_chi;
   j["max_displacement"] = max_u;
   j["min_displacement_y"] = u2.minCoeff();
+  j["tip_displacement"] = point_json(displacement_at(s.mesh(), u, tip_of(c)));
+  j["structure_force"] = point_json(resultant(result.fluid_load));
   if (!fluid_only) {
     j["contact"] = to_json(cs);
     j["kkt"] = to_json(result.structure.qp.kkt);

@@ -80,6 +80,10 @@ Json timing_json(const PhaseTimes& times, double total) {
   return j;
 }
 
+Json point_json(const Point& p) { return Json::array({p.x(), p.y()}); }
+
+Point tip_of(const Case& c) { return Point(c.structure.L, c.structure.H / 2); }
+
 double max_displacement(const Eigen::VectorXd& u) {
   const Eigen::Index nv = u.size() / 2;
   double m = 0;

@@ -32,6 +32,12 @@ Json timing_json(const PhaseTimes& times, double total);
 std::string json_text(const Json& j, int indent = -1);
 void write_json(const std::string& path, const Json& j);
 
+// [x, y] as a JSON array.
+Json point_json(const Point& p);
+// The structure's tip: the middle of its free end, (L, H/2) in the reference
+// configuration (summary.json's tip_displacement).
+Point tip_of(const Case& c);
+
 // max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
 double max_displacement(const Eigen::VectorXd& u);
 

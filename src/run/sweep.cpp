@@ -113,16 +113,9 @@ void begin_sweep_dir(const std::string& out_dir, std::size_t rows, const Json& h
   if (ec) throw OutputError(out_dir, ec.value());
   write_json((fs::path(out_dir) / "summary.json").string(), header);
   remove_stale_outputs(out_dir, "summary.json");
-  for (fs::directory_iterator it(out_dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    int number = 0;
-    char rest = 0;
-    if (std::sscanf(name.c_str(), "row-%d%c", &number, &rest) == 1 && number > static_cast<int>(rows) &&
-        it->is_directory(ec)) {
-      remove_stale_outputs(it->path().string());
-      fs::remove(it->path(), ec);  // only if now empty: a user's own files stay
-    }
-  }
+  std::vector<std::string> keep;
+  for (std::size_t i = 0; i < rows; ++i) keep.push_back(fs::path(row_dir(out_dir, i)).filename().string());
+  remove_stale_subdirs(out_dir, "row-", keep);
 }
 
 std::string status_of(const RunResult& r, SweepResult& result) {

@@ -1,0 +1,39 @@
+// fsicontact converge: the case on successively refined levels (every size key divided
+// by the ratio r, ε following coupling.eps_rule), and per quantity of interest the
+// values, the observed order, the Richardson extrapolation and the Grid Convergence
+// Index (study/richardson.hpp); with several coupling schemes, whether they land on
+// the same state at every level.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "run/summary.hpp"
+
+namespace fsi {
+
+struct ConvergeOptions {
+  std::vector<std::string> overrides;  // --set, applied to every level
+  int levels = 3;
+  double ratio = 2;
+  std::string out_dir;                 // default out/<name>-converge
+  // The coupling schemes run at every level; the first gives the study's values, the
+  // others are compared with it. Empty: the case's scheme only.
+  std::vector<std::string> schemes;
+  std::function<void(const std::string&)> progress;
+};
+
+struct ConvergeResult {
+  int exit_status = 0;  // 0 every level converged, 1 a level failed, 3 a level at its limit
+  Json summary;
+  std::string report;   // the table, for stdout
+  std::string out_dir;
+};
+
+// Validates everything first (the options, every level's case and meshes: InputError,
+// nothing written), then runs the levels coarsest first, each in <out>/level-i, and
+// writes <out>/convergence.{csv,md,png} and <out>/summary.json.
+ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptions& options);
+
+}  // namespace fsi

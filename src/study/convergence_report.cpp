@@ -1,0 +1,175 @@
+#include "study/convergence_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "common/format.hpp"
+#include "io/chart.hpp"
+
+namespace fsi {
+namespace {
+
+// The size that characterises a level: the fluid's at the structure, or the
+// structure's own for a contact-only study.
+double size_of(const Case& c) { return c.fluid ? c.fluid->size_near() : c.structure.h; }
+
+std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) {
+  std::vector<const LevelRun*> out;
+  for (const auto& r : s.runs)
+    if (r.spec.scheme == scheme) out.push_back(&r);
+  return out;
+}
+
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+std::string cell(double v, int digits = 6) { return std::isfinite(v) ? approx(v, digits) : "–"; }
+
+}  // namespace
+
+void evaluate(Study& study, bool with_fluid) {
+  const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
+  study.quantities.clear();
+  for (const Quantity& q : quantities(with_fluid)) {
+    QuantityStudy qs{q, {}, {}, {}, NAN, true};
+    for (const LevelRun* r : primary) qs.values.push_back(r->result.summary.is_null() ? NAN : q.read(r->result.summary));
+    const bool complete = std::all_of(qs.values.begin(), qs.values.end(), [](double v) { return std::isfinite(v); });
+    if (complete) qs.estimate = estimate_convergence(qs.values, study.ratio);
+    qs.scheme_difference.assign(qs.values.size(), NAN);
+    for (std::size_t s = 1; s < study.schemes.size(); ++s) {
+      const std::vector<const LevelRun*> other = runs_of(study, study.schemes[s]);
+      for (std::size_t i = 0; i < other.size() && i < qs.values.size(); ++i) {
+        // Only a converged run says where its scheme's fixed point is.
+        const bool both = other[i]->status == "converged" && primary[i]->status == "converged";
+        const double d = both ? std::abs(q.read(other[i]->result.summary) - qs.values[i]) : NAN;
+        if (std::isfinite(d)) qs.scheme_difference[i] = std::isfinite(qs.scheme_difference[i]) ? std::max(qs.scheme_difference[i], d) : d;
+      }
+    }
+    for (double d : qs.scheme_difference)
+      if (std::isfinite(d)) qs.max_scheme_difference = std::isfinite(qs.max_scheme_difference) ? std::max(qs.max_scheme_difference, d) : d;
+    const double allowed = std::isfinite(qs.estimate.gci_abs) && qs.estimate.gci_abs > 0
+                               ? 0.1 * qs.estimate.gci_abs
+                               : 1e-6 * std::abs(qs.values.empty() ? 0.0 : qs.values.back());
+    qs.schemes_agree = !(qs.max_scheme_difference > allowed);
+    study.quantities.push_back(std::move(qs));
+  }
+  // The stopping test's increment is an L² norm over Ω_S0 (m²): a displacement change
+  // δ spread over the structure is δ·sqrt(|Ω_S0|). Tied to the discretisation, the
+  // tolerance should be below a thousandth of max |u|'s GCI so measured.
+  const Case& finest = primary.back()->spec.c;
+  study.tol_used = finest.coupling.tol;
+  const double gci = study.quantities.front().estimate.gci_abs;
+  study.tol_advised = std::isfinite(gci) ? 1e-3 * gci * std::sqrt(finest.structure.L * finest.structure.H) : NAN;
+}
+
+std::string convergence_csv(const Study& study) {
+  std::ostringstream out;
+  out << std::setprecision(12) << "level,scheme,structure_h,fluid_h,fluid_h_near,eps,structure_triangles,fluid_triangles,"
+      << "iterations,wall_s,status";
+  for (const auto& q : study.quantities) out << ',' << q.quantity.name;
+  out << '\n';
+  for (const LevelRun& r : study.runs) {
+    const Case& c = r.spec.c;
+    const Json& s = r.result.summary;
+    auto mesh = [&](const char* part) {
+      return s.is_object() && s.contains("mesh") && s["mesh"].contains(part) ? s["mesh"][part]["triangles"].get<int>() : 0;
+    };
+    out << r.spec.index << ',' << r.spec.scheme << ',' << c.structure.h << ',' << (c.fluid ? c.fluid->h : NAN) << ','
+        << (c.fluid ? c.fluid->h_near : NAN) << ',' << c.coupling.eps << ',' << mesh("structure") << ',' << mesh("fluid")
+        << ',' << (s.is_object() && s.contains("iterations") ? s["iterations"].get<int>() : 0) << ',' << r.wall_s << ",\""
+        << r.status << '"';
+    for (const auto& q : study.quantities) out << ',' << (s.is_null() ? NAN : q.quantity.read(s));
+    out << '\n';
+  }
+  return out.str();
+}
+
+std::string convergence_markdown(const Study& study) {
+  std::ostringstream md;
+  md << "| level | h | ε |";
+  for (const auto& q : study.quantities) md << ' ' << q.quantity.name << " (" << q.quantity.unit << ") |";
+  md << "\n|---|---|---|";
+  for (std::size_t i = 0; i < study.quantities.size(); ++i) md << "---|";
+  md << '\n';
+  for (const LevelRun* r : runs_of(study, study.schemes.front())) {
+    md << "| " << r->spec.index << " | " << cell(size_of(r->spec.c), 4) << " | " << cell(r->spec.c.coupling.eps, 3) << " |";
+    for (const auto& q : study.quantities) md << ' ' << cell(q.values[static_cast<std::size_t>(r->spec.index - 1)], 8) << " |";
+    md << '\n';
+  }
+  md << "\n| quantity | kind | observed order | extrapolated | GCI | asymptotic | schemes' largest difference |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const auto& q : study.quantities) {
+    const ConvergenceEstimate& e = q.estimate;
+    md << "| " << q.quantity.name << " | " << to_string(e.kind) << " | " << cell(e.observed_order, 3) << " | "
+       << cell(e.extrapolated, 8) << " | " << (std::isfinite(e.gci) ? approx(100 * e.gci, 3) + " %" : "–") << " | "
+       << (e.asymptotic ? (*e.asymptotic ? "yes" : "no") : "needs 4 levels") << " | "
+       << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
+       << " |\n";
+  }
+  return md.str();
+}
+
+void write_convergence_png(const std::string& path, const Study& study) {
+  std::vector<Series> series;
+  const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
+  for (std::size_t k = 0; k < study.quantities.size(); ++k) {
+    const QuantityStudy& q = study.quantities[k];
+    Series s;
+    s.label = q.quantity.name;
+    const double n = static_cast<double>(study.quantities.size());
+    s.colour = viridis(n > 1 ? static_cast<double>(k) / (n - 1) : 0.0);
+    const double scale = std::abs(q.values.back());
+    for (std::size_t i = 0; i + 1 < q.values.size(); ++i) {
+      const double d = std::abs(q.values[i] - q.values[i + 1]) / (scale > 0 ? scale : 1.0);
+      if (std::isfinite(d) && d > 0) s.x.push_back(size_of(primary[i]->spec.c)), s.y.push_back(d);
+    }
+    if (!s.x.empty()) series.push_back(std::move(s));
+  }
+  ChartOptions options;
+  options.title = "Differences between consecutive levels (relative to the finest value)";
+  options.x_label = "mesh size h (m)";
+  options.y_label = "|phi_i - phi_i+1| / |phi_finest|";
+  write_chart(path, options, series);
+}
+
+Json convergence_json(const Study& study) {
+  Json levels = Json::array();
+  for (const LevelRun& r : study.runs) {
+    const Case& c = r.spec.c;
+    Json l = {{"level", r.spec.index}, {"scheme", r.spec.scheme}, {"structure_h", c.structure.h},
+              {"eps", c.coupling.eps}, {"status", r.status}, {"wall_s", number_or_null(r.wall_s)},
+              {"dir", c.output.dir}};
+    if (c.fluid) l["fluid_h"] = c.fluid->h, l["fluid_h_near"] = c.fluid->h_near;
+    const Json& s = r.result.summary;
+    if (s.is_object() && s.contains("mesh")) l["mesh"] = s["mesh"];
+    if (s.is_object() && s.contains("iterations")) l["iterations"] = s["iterations"];
+    levels.push_back(l);
+  }
+  Json quantities = Json::object();
+  for (const auto& q : study.quantities) {
+    const ConvergenceEstimate& e = q.estimate;
+    Json values = Json::array(), orders = Json::array(), diffs = Json::array();
+    for (double v : q.values) values.push_back(number_or_null(v));
+    for (double p : e.orders) orders.push_back(number_or_null(p));
+    for (double d : q.scheme_difference) diffs.push_back(number_or_null(d));
+    quantities[q.quantity.name] = {{"unit", q.quantity.unit},
+                                   {"values", values},
+                                   {"observed_order", number_or_null(e.observed_order)},
+                                   {"orders", orders},
+                                   {"kind", to_string(e.kind)},
+                                   {"extrapolated", number_or_null(e.extrapolated)},
+                                   {"gci", number_or_null(e.gci)},
+                                   {"gci_abs", number_or_null(e.gci_abs)},
+                                   {"asymptotic", e.asymptotic ? Json(*e.asymptotic) : Json(nullptr)},
+                                   {"scheme_difference", diffs},
+                                   {"schemes_agree", q.schemes_agree}};
+  }
+  return {{"ratio", study.ratio},
+          {"schemes", study.schemes},
+          {"levels", levels},
+          {"quantities", quantities},
+          {"coupling_tolerance", {{"used", number_or_null(study.tol_used)}, {"advised", number_or_null(study.tol_advised)}}}};
+}
+
+}  // namespace fsi

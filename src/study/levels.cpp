@@ -1,0 +1,54 @@
+#include "study/levels.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace fsi {
+namespace {
+
+// The overrides of level i (0-based): sizes / r^i, ε · r^(−i p).
+std::vector<std::string> level_overrides(const Case& base, int i, double ratio) {
+  const double scale = std::pow(ratio, -i);
+  std::vector<std::string> sets = {"structure.h=" + shortest(base.structure.h * scale)};
+  if (base.fluid) {
+    sets.push_back("fluid.h=" + shortest(base.fluid->h * scale));
+    if (base.fluid->h_near > 0) sets.push_back("fluid.h_near=" + shortest(base.fluid->h_near * scale));
+    const double p = base.coupling.eps_power();
+    if (p > 0) sets.push_back("coupling.eps=" + shortest(base.coupling.eps * std::pow(scale, p)));
+  }
+  return sets;
+}
+
+}  // namespace
+
+std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vector<std::string>& overrides,
+                                   int levels, double ratio, const std::vector<std::string>& schemes,
+                                   const std::string& out_dir) {
+  const Case base = load_case(case_path, overrides);
+  std::vector<std::string> runs = schemes;
+  if (runs.empty()) runs.push_back(base.coupling.scheme);
+  std::vector<LevelSpec> specs;
+  const std::size_t schemes_run = base.fluid ? runs.size() : 1;  // contact only: no coupling to compare
+  for (std::size_t s = 0; s < schemes_run; ++s)
+    for (int i = 0; i < levels; ++i) {
+      std::vector<std::string> sets = overrides;
+      const std::vector<std::string> sizes = level_overrides(base, i, ratio);
+      sets.insert(sets.end(), sizes.begin(), sizes.end());
+      if (base.fluid) sets.push_back("coupling.scheme=" + runs[s]);
+      const std::string dir = "level-" + std::to_string(i + 1) + (s == 0 ? "" : "-" + runs[s]);
+      LevelSpec spec{i + 1, runs[s], {}};
+      try {
+        spec.c = load_case(case_path, sets, (std::filesystem::path(out_dir) / dir).string());
+      } catch (const InputError& e) {
+        throw InputError("level " + std::to_string(i + 1) + " (sizes / " + shortest(std::pow(ratio, i)) +
+                         "): " + e.what());
+      }
+      specs.push_back(std::move(spec));
+    }
+  return specs;
+}
+
+}  // namespace fsi
