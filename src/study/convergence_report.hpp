@@ -43,6 +43,8 @@ struct Study {
 // Values, estimates and scheme differences from the runs.
 void evaluate(Study& study, bool with_fluid);
 
+// "" or why coupling.tol is too coarse for the study (tol_used > tol_advised).
+std::string tolerance_note(const Study& study);
 std::string convergence_csv(const Study& study);
 std::string convergence_markdown(const Study& study);
 void write_convergence_png(const std::string& path, const Study& study);
