@@ -90,7 +90,8 @@ Mesh generate_fluid_mesh(const FluidGeometry& g) {
 
 Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
   const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
-  const FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u};
+  FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u, g.h_near / u, g.band};
+  for (double& b : scaled.band) b /= u;
   return generate(
       "meshing the fluid box", [&] { return mesh_fluid_in_gmsh(scaled); }, u,
       {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D", limits);

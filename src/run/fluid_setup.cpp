@@ -2,16 +2,20 @@
 
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/fluid_band.hpp"
 #include "run/mesh_checks.hpp"
+#include "run/structure_setup.hpp"
 
 namespace fsi {
 
-Mesh build_fluid_mesh(const Case& c) {
+Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>& band) {
   const FluidParams& f = *c.fluid;
   const ObstacleParams& o = c.obstacle;
   if (f.mesh.empty()) {
     try {
-      return generate_fluid_mesh({f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h});
+      FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
+      if (band) g.h_near = f.h_near, g.band = *band;
+      return generate_fluid_mesh(g);
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
     }
@@ -21,7 +25,14 @@ Mesh build_fluid_mesh(const Case& c) {
 }
 
 Mesh make_fluid_mesh(const Case& c) {
-  Mesh mesh = build_fluid_mesh(c);
+  std::optional<std::array<double, 4>> band;
+  if (band_needs_structure(c)) {
+    const StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
+    band = fluid_band_box(c, &s);
+  } else {
+    band = fluid_band_box(c, nullptr);
+  }
+  Mesh mesh = build_fluid_mesh(c, band);
   if (!c.fluid->mesh.empty()) check_fluid_mesh(c, mesh);
   return mesh;
 }

@@ -3,7 +3,9 @@
 // conditions (SPEC §3).
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 
 #include "fluid/chi.hpp"
 #include "fluid/fluid_field.hpp"
@@ -20,9 +22,11 @@ struct FluidSetup {
 };
 
 // Generates or reads the mesh of D: a bad user file is an InputError, a failure to
-// mesh validated geometry a SolverFailure. Depends on fluid.* and obstacle.* only.
-Mesh build_fluid_mesh(const Case& c);
-// build_fluid_mesh, then (a mesh file) check_fluid_mesh against the case's keys.
+// mesh validated geometry a SolverFailure. Depends on fluid.* and obstacle.*, and on
+// `band` (fluid_band_box, run/fluid_band.hpp: h_near's box, nullopt without h_near).
+Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>& band);
+// build_fluid_mesh (the band from a structure setup made here if it needs one), then
+// (a mesh file) check_fluid_mesh against the case's keys.
 Mesh make_fluid_mesh(const Case& c);
 
 // v = g on the label Σ4 (g = (0, Vmax·4x(x − L1)/L1²)), v = 0 on Σ1, Σ3, Σ5, Σ2

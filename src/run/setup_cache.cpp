@@ -1,5 +1,6 @@
 #include "run/setup_cache.hpp"
 
+#include "run/fluid_band.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/summary.hpp"
 
@@ -38,10 +39,21 @@ const Mesh& SetupCache::structure_mesh(const Case& c) {
   return it->second;
 }
 
+std::optional<std::array<double, 4>> SetupCache::band(const Case& c) {
+  if (!band_needs_structure(c)) return fluid_band_box(c, nullptr);
+  const std::string key = structure_setup_key(c) + json_text(to_json(*c.fluid));
+  auto it = bands_.find(key);
+  if (it == bands_.end()) it = bands_.emplace(key, *fluid_band_box(c, &structure(c))).first;
+  return it->second;
+}
+
+// The band's box joins the key as numbers: two cases whose bands differ remesh.
 const Mesh& SetupCache::fluid_mesh(const Case& c) {
-  const std::string key = fluid_mesh_key(c);
+  const std::optional<std::array<double, 4>> box = band(c);
+  std::string key = fluid_mesh_key(c);
+  if (box) key += json_text(Json(*box));
   auto it = fluid_meshes_.find(key);
-  if (it == fluid_meshes_.end()) it = fluid_meshes_.emplace(key, build_fluid_mesh(c)).first;
+  if (it == fluid_meshes_.end()) it = fluid_meshes_.emplace(key, build_fluid_mesh(c, box)).first;
   if (!c.fluid->mesh.empty()) check_fluid_mesh(c, it->second);
   return it->second;
 }
@@ -58,7 +70,8 @@ StructureSetup& SetupCache::structure(const Case& c) {
 }
 
 FluidSetup& SetupCache::fluid(const Case& c) {
-  const std::string key = fluid_setup_key(c);
+  const std::optional<std::array<double, 4>> box = band(c);
+  const std::string key = fluid_setup_key(c) + (box ? json_text(Json(*box)) : std::string());
   if (key != fluid_key_ || !fluid_.stokes) {
     fluid_ = FluidSetup{};  // release the old factorisation before building the next
     fluid_key_.clear();

@@ -7,7 +7,9 @@
 // every row, and the fluid solver is reset (χ, last solution) and given the row's ε.
 #pragma once
 
+#include <array>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 
@@ -26,9 +28,12 @@ class SetupCache {
   // The last setup of each kind is kept; a different key rebuilds it.
   StructureSetup& structure(const Case& c);
   FluidSetup& fluid(const Case& c);
+  // fluid.h_near's box (run/fluid_band.hpp), computed once per structure setup.
+  std::optional<std::array<double, 4>> band(const Case& c);
 
  private:
   std::map<std::string, Mesh> structure_meshes_, fluid_meshes_;
+  std::map<std::string, std::array<double, 4>> bands_;
   std::string structure_key_, fluid_key_;
   StructureSetup structure_;
   FluidSetup fluid_;

@@ -69,6 +69,8 @@ Json to_json(const ContactSummary& s) {
   j["x_min"] = s.active_nodes ? Json(s.x_min) : Json(nullptr);
   j["x_max"] = s.active_nodes ? Json(s.x_max) : Json(nullptr);
   j["max_multiplier"] = s.max_multiplier;
+  j["pressure_resultant"] = s.pressure_resultant;
+  j["x_centroid"] = s.pressure_resultant > 0 ? Json(s.x_centroid) : Json(nullptr);
   return j;
 }
 

@@ -56,6 +56,7 @@ ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
                                            const Foundation& foundation, int gamma_c_label,
                                            const std::vector<int>& fixed_dofs, QpSolver& solver)
     : mesh_(std::move(mesh)),
+      gamma_c_label_(gamma_c_label),
       A_S_(assemble_elasticity(mesh_, lame)),
       contact_(assemble_contact(mesh_, gamma_c_label, foundation)),
       solver_(solver) {
@@ -121,6 +122,20 @@ ContactSummary summarize_contact(const ElasticContactSolver& solver, const Conta
     }
   }
   out.max_multiplier = s.qp.alpha.size() ? s.qp.alpha.maxCoeff() : 0.0;
+  // λ's nodal values: α on the rows' vertices, 0 elsewhere (Γ_C's ends carry no row).
+  const Mesh& mesh = solver.mesh();
+  std::vector<double> lambda(static_cast<std::size_t>(mesh.num_vertices()), 0.0);
+  const auto& rows = solver.contact().row_vertex;
+  for (std::size_t i = 0; i < rows.size() && i < static_cast<std::size_t>(s.qp.alpha.size()); ++i)
+    lambda[static_cast<std::size_t>(rows[i])] = std::max(s.qp.alpha[static_cast<Eigen::Index>(i)], 0.0);
+  double moment = 0;
+  for (const BoundaryEdge& e : mesh.edges_on(solver.gamma_c_label())) {
+    const Point &A = mesh.vertices[e.v[0]], &B = mesh.vertices[e.v[1]];
+    const double la = lambda[e.v[0]], lb = lambda[e.v[1]], l = (B - A).norm();
+    out.pressure_resultant += l * (la + lb) / 2;  // exact: P1 λ, linear X1 on an edge
+    moment += l / 6 * (la * (2 * A.x() + B.x()) + lb * (A.x() + 2 * B.x()));
+  }
+  out.x_centroid = out.pressure_resultant > 0 ? moment / out.pressure_resultant : 0.0;
   return out;
 }
 

@@ -38,10 +38,12 @@ class ElasticContactSolver {
   const SparseMatrix& A_S() const { return A_S_; }
   const ContactConstraint& contact() const { return contact_; }
   const Mesh& mesh() const { return mesh_; }
+  int gamma_c_label() const { return gamma_c_label_; }
   QpSolver& qp_solver() { return solver_; }
 
  private:
   Mesh mesh_;
+  int gamma_c_label_;
   SparseMatrix A_S_;
   ContactConstraint contact_;
   std::vector<int> free_dofs_;
@@ -61,6 +63,13 @@ struct ContactSummary {
   int active_nodes = 0;
   double x_min = 0, x_max = 0;  // reference X1 extent of the active vertices (if any)
   double max_multiplier = 0;    // largest α: peak discrete contact pressure
+  // The contact pressure λ = Σ α_i φ_i on Γ_C (the multipliers of eq. 21's rows are
+  // its nodal values), integrated exactly on Γ_C's edges: its resultant ∫ λ ds (N/m)
+  // and the reference X1 of its centroid ∫ λ X1 ds / ∫ λ ds. Unlike x_min, x_max,
+  // which jump from vertex to vertex, the centroid moves continuously with the mesh:
+  // the contact point a refinement study can converge.
+  double pressure_resultant = 0;
+  double x_centroid = 0;
 };
 ContactSummary summarize_contact(const ElasticContactSolver& solver, const ContactSolution& s);
 

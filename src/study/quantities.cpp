@@ -25,7 +25,9 @@ const std::vector<Quantity>& quantities(bool with_fluid) {
       {"tip_displacement", "m",
        [](const Json& s) { return std::hypot(component(s, "tip_displacement", 0), component(s, "tip_displacement", 1)); }},
       {"contact_x_min", "m", [](const Json& s) { return in(s, "contact", "x_min"); }},
-      {"contact_x_max", "m", [](const Json& s) { return in(s, "contact", "x_max"); }}};
+      {"contact_x_max", "m", [](const Json& s) { return in(s, "contact", "x_max"); }},
+      {"contact_x_centroid", "m", [](const Json& s) { return in(s, "contact", "x_centroid"); }},
+      {"contact_force", "N/m", [](const Json& s) { return in(s, "contact", "pressure_resultant"); }}};
   static const std::vector<Quantity> coupled = [] {
     std::vector<Quantity> q = structure;
     q.push_back({"fluid_velocity_l2_in_structure", "m^2/s", [](const Json& s) { return at(s, "fluid_velocity_l2_in_structure"); }});
