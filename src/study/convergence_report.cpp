@@ -105,12 +105,13 @@ std::string convergence_markdown(const Study& study) {
     for (const auto& q : study.quantities) md << ' ' << cell(q.values[static_cast<std::size_t>(r->spec.index - 1)], 8) << " |";
     md << '\n';
   }
-  md << "\n| quantity | kind | observed order | extrapolated | GCI | asymptotic | schemes' largest difference |\n"
-        "|---|---|---|---|---|---|---|\n";
+  md << "\n| quantity | kind | observed order | extrapolated | GCI | finest ± error bar | asymptotic | schemes' largest "
+        "difference |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& q : study.quantities) {
     const ConvergenceEstimate& e = q.estimate;
     md << "| " << q.quantity.name << " | " << to_string(e.kind) << " | " << cell(e.observed_order, 3) << " | "
        << cell(e.extrapolated, 8) << " | " << (std::isfinite(e.gci) ? approx(100 * e.gci, 3) + " %" : "–") << " | "
+       << (std::isfinite(e.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(e.error_bar, 2) : "–") << " | "
        << (e.asymptotic ? (*e.asymptotic ? "yes" : "no") : "needs 4 levels") << " | "
        << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
        << " |\n";
@@ -171,6 +172,7 @@ Json convergence_json(const Study& study) {
                                    {"extrapolated", number_or_null(e.extrapolated)},
                                    {"gci", number_or_null(e.gci)},
                                    {"gci_abs", number_or_null(e.gci_abs)},
+                                   {"error_bar", number_or_null(e.error_bar)},
                                    {"asymptotic", e.asymptotic ? Json(*e.asymptotic) : Json(nullptr)},
                                    {"scheme_difference", diffs},
                                    {"schemes_agree", q.schemes_agree}};

@@ -1,5 +1,6 @@
 #include "study/richardson.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fsi {
@@ -44,6 +45,9 @@ ConvergenceEstimate estimate_convergence(const std::vector<double>& values, doub
     e.gci_abs = safety * std::abs(phi2 - phi1) / (rp - 1);
     e.gci = phi1 != 0 ? e.gci_abs / std::abs(phi1) : NAN;
   }
+  if (e.kind == ConvergenceKind::monotone || e.kind == ConvergenceKind::exact) e.error_bar = e.gci_abs;
+  if (e.kind == ConvergenceKind::oscillatory)
+    e.error_bar = 3 * (std::max({phi1, phi2, phi3}) - std::min({phi1, phi2, phi3})) / 2;
   if (n >= 4) {
     const ConvergenceKind previous = kind_of(values[n - 4], phi3, phi2);
     const double p_previous = e.orders[e.orders.size() - 2];

@@ -9,6 +9,10 @@
 //   R ≥ 1      divergence (p ≤ 0: no extrapolation, no GCI),
 //   ε₂₁ = 0    exact: the two finest agree (p undefined, GCI 0);
 //   φ_ext = φ₁ + (φ₁ − φ₂)/(r^p − 1),  GCI = 1.25 |ε₂₁/φ₁| / (r^p − 1) (relative).
+// The error bar of φ₁: the GCI where it is defined (monotone; 0 when exact); for an
+// oscillating sequence, which has no order to extrapolate with, 3 × half the range of
+// the finest three (Roache's safety factor for estimates without a verified order;
+// the range is what the oscillation shows of the error); none when diverging.
 // With four levels or more the asymptotic range is tested the only way three levels
 // cannot (their own p makes Roache's ratio test hold by construction): the orders of
 // the finest and the next triple must both be monotone and agree within 0.3.
@@ -29,6 +33,7 @@ struct ConvergenceEstimate {
   double extrapolated = NAN;     // φ_ext (monotone only)
   double gci = NAN;              // relative GCI of the finest level (monotone only)
   double gci_abs = NAN;          // gci · |φ₁|
+  double error_bar = NAN;        // absolute, of φ₁ (see above)
   std::vector<double> orders;    // p of each consecutive triple, coarsest first
   std::optional<bool> asymptotic;  // none with fewer than four levels
 };

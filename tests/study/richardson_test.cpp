@@ -24,6 +24,7 @@ TEST(Richardson, RecoversTheOrderAndTheLimitOfAnExactPowerLaw) {
       const double error = std::abs(values.back() - 41.4);
       EXPECT_NEAR(e.gci_abs, 1.25 * error, 1e-6 * error);
       EXPECT_NEAR(e.gci, e.gci_abs / values.back(), 1e-15);
+      EXPECT_EQ(e.error_bar, e.gci_abs);
       ASSERT_TRUE(e.asymptotic.has_value());
       EXPECT_TRUE(*e.asymptotic);
       EXPECT_EQ(e.orders.size(), 3u);
@@ -54,15 +55,19 @@ TEST(Richardson, NamesOscillationDivergenceAndExactness) {
   EXPECT_TRUE(std::isnan(osc.extrapolated));
   EXPECT_TRUE(std::isnan(osc.gci));
   EXPECT_FALSE(*osc.asymptotic);
+  // No order to extrapolate with: the error bar is 3 × half the finest three's range.
+  EXPECT_DOUBLE_EQ(osc.error_bar, 3 * (1.4 - 1.2) / 2);
   const ConvergenceEstimate div = estimate_convergence({1.0, 1.1, 1.3}, 2.0);
   EXPECT_EQ(div.kind, ConvergenceKind::divergent);
   EXPECT_LT(div.observed_order, 0.0);
   EXPECT_TRUE(std::isnan(div.gci));
+  EXPECT_TRUE(std::isnan(div.error_bar));  // growing differences bound nothing
   EXPECT_FALSE(div.asymptotic.has_value());  // three levels cannot tell
   const ConvergenceEstimate exact = estimate_convergence({2.0, 2.0, 2.0, 2.0}, 2.0);
   EXPECT_EQ(exact.kind, ConvergenceKind::exact);
   EXPECT_EQ(exact.gci, 0.0);
   EXPECT_EQ(exact.extrapolated, 2.0);
+  EXPECT_EQ(exact.error_bar, 0.0);
   EXPECT_EQ(estimate_convergence({1.0, 2.0}, 2.0).kind, ConvergenceKind::too_few);
   // A contact zone's end sits on a vertex: the finest two levels can agree exactly.
   const ConvergenceEstimate settled = estimate_convergence({0.0563, 0.0557, 0.056, 0.056}, 2.0);
