@@ -59,13 +59,15 @@ std::vector<std::string> scheme_list(const std::string& text) {
 }
 
 int converge_command(const std::string& case_path, const std::vector<std::string>& sets, const std::string& out_dir,
-                     int levels, double ratio, const std::string& schemes, bool quiet, Streams io) {
+                     int levels, double ratio, const std::string& schemes, const std::string& refine, bool quiet,
+                     Streams io) {
   ConvergeOptions options;
   options.overrides = sets;
   options.out_dir = out_dir;
   options.levels = levels;
   options.ratio = ratio;
   options.schemes = scheme_list(schemes);
+  options.refine = refine;
   if (!quiet) options.progress = [&io](const std::string& line) { io.err << line << '\n'; };
   const ConvergeResult r = run_convergence(case_path, options);
   io.out << r.report << "\nResults in " << r.out_dir << "/ (convergence.md, convergence.csv, convergence.png, "
@@ -95,7 +97,7 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   sweep->add_option("--out", out_dir, "output directory (default out/<name>-sweep)");
   sweep->add_flag("--keep-outputs", keep_outputs, "write each row's .vtu and .png too");
   sweep->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
-  std::string converge_case, schemes;
+  std::string converge_case, schemes, refine = "all";
   int levels = 3;
   double ratio = 2;
   CLI::App* converge = app.add_subcommand(
@@ -106,6 +108,9 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   converge->add_option("--schemes", schemes,
                        "coupling schemes run at every level, the first gives the values: a list "
                        "(constant,aitken,iqn-ils) or all (default: the case's own)");
+  converge->add_option("--refine", refine,
+                       "which meshes the levels refine: all (default), fluid (fluid.h, fluid.h_near, eps by its rule) "
+                       "or structure (structure.h); the other stays as given");
   converge->add_option("--set", sets, "override a key on every level: section.key=value")->type_name("KEY=VALUE");
   converge->add_option("--out", out_dir, "output directory (default out/<name>-converge)");
   converge->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
@@ -122,7 +127,7 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   const Streams io{out, err};
   try {
     if (sweep->parsed()) return sweep_command(sweep_case, sweep_rows, sets, out_dir, keep_outputs, quiet, io);
-    if (converge->parsed()) return converge_command(converge_case, sets, out_dir, levels, ratio, schemes, quiet, io);
+    if (converge->parsed()) return converge_command(converge_case, sets, out_dir, levels, ratio, schemes, refine, quiet, io);
     return run_command(case_path, sets, out_dir, quiet, io);
   } catch (const InputError& e) {
     err << "fsicontact: error: " << e.what() << std::endl;

@@ -24,6 +24,8 @@ void check_options(const ConvergeOptions& o) {
   if (!(o.ratio > 1 && o.ratio <= 10))
     throw InputError("--ratio " + shortest(o.ratio) + " is out of range; allowed: (1, 10] (each level's sizes are "
                      "the previous ones divided by it)");
+  if (o.refine != "all" && o.refine != "fluid" && o.refine != "structure")
+    throw InputError("--refine \"" + o.refine + "\" is not known; allowed: all, fluid, structure");
   std::set<std::string> seen;
   for (const auto& s : o.schemes) {
     if (s != "constant" && s != "aitken" && s != "iqn-ils")
@@ -93,11 +95,13 @@ void run_levels(Study& study, SetupCache& cache, const ConvergeOptions& options)
 ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptions& options) {
   check_options(options);
   const Case base = load_case(case_path, options.overrides);
+  if (options.refine == "fluid" && !base.fluid)
+    throw InputError("--refine fluid: " + base.source + " has no fluid to refine; allowed: all or structure");
   ConvergeResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-converge" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
   std::vector<LevelSpec> specs = make_levels(case_path, options.overrides, options.levels, options.ratio,
-                                             options.schemes, result.out_dir);
+                                             options.schemes, result.out_dir, options.refine);
   std::stable_sort(specs.begin(), specs.end(), [](const LevelSpec& a, const LevelSpec& b) { return a.index < b.index; });
   SetupCache cache;
   check_level_meshes(specs, cache);
@@ -105,6 +109,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   Study study;
   study.ratio = options.ratio;
   study.levels = options.levels;
+  study.refine = options.refine;
   study.schemes = options.schemes.empty() ? std::vector<std::string>{base.coupling.scheme} : options.schemes;
   if (!base.fluid) study.schemes.resize(1);
   for (auto& spec : specs) {

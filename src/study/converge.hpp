@@ -21,6 +21,7 @@ struct ConvergeOptions {
   // The coupling schemes run at every level; the first gives the study's values, the
   // others are compared with it. Empty: the case's scheme only.
   std::vector<std::string> schemes;
+  std::string refine = "all";          // "all" | "fluid" | "structure" (study/levels.hpp)
   std::function<void(const std::string&)> progress;
 };
 

@@ -13,7 +13,11 @@ namespace {
 
 // The size that characterises a level: the fluid's at the structure, or the
 // structure's own for a contact-only study.
-double size_of(const Case& c) { return c.fluid ? c.fluid->size_near() : c.structure.h; }
+// The size the levels refine: the fluid's at the structure, or the structure's when
+// only the structure is refined (or there is no fluid).
+double size_of(const Study& s, const Case& c) {
+  return c.fluid && s.refine != "structure" ? c.fluid->size_near() : c.structure.h;
+}
 
 std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) {
   std::vector<const LevelRun*> out;
@@ -101,7 +105,7 @@ std::string convergence_markdown(const Study& study) {
   for (std::size_t i = 0; i < study.quantities.size(); ++i) md << "---|";
   md << '\n';
   for (const LevelRun* r : runs_of(study, study.schemes.front())) {
-    md << "| " << r->spec.index << " | " << cell(size_of(r->spec.c), 4) << " | " << cell(r->spec.c.coupling.eps, 3) << " |";
+    md << "| " << r->spec.index << " | " << cell(size_of(study, r->spec.c), 4) << " | " << cell(r->spec.c.coupling.eps, 3) << " |";
     for (const auto& q : study.quantities) md << ' ' << cell(q.values[static_cast<std::size_t>(r->spec.index - 1)], 8) << " |";
     md << '\n';
   }
@@ -133,7 +137,7 @@ void write_convergence_png(const std::string& path, const Study& study) {
     const double scale = std::abs(q.values.back());
     for (std::size_t i = 0; i + 1 < q.values.size(); ++i) {
       const double d = std::abs(q.values[i] - q.values[i + 1]) / (scale > 0 ? scale : 1.0);
-      if (std::isfinite(d) && d > 0) s.x.push_back(size_of(primary[i]->spec.c)), s.y.push_back(d);
+      if (std::isfinite(d) && d > 0) s.x.push_back(size_of(study, primary[i]->spec.c)), s.y.push_back(d);
     }
     if (!s.x.empty()) series.push_back(std::move(s));
   }
@@ -178,6 +182,7 @@ Json convergence_json(const Study& study) {
                                    {"schemes_agree", q.schemes_agree}};
   }
   return {{"ratio", study.ratio},
+          {"refine", study.refine},
           {"schemes", study.schemes},
           {"levels", levels},
           {"quantities", quantities},

@@ -34,6 +34,7 @@ struct QuantityStudy {
 struct Study {
   double ratio = 2;
   int levels = 0;
+  std::string refine = "all";        // which meshes the levels refine
   std::vector<std::string> schemes;
   std::vector<LevelRun> runs;        // level-major: level 1's schemes, then level 2's, ...
   std::vector<QuantityStudy> quantities;

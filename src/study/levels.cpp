@@ -10,10 +10,11 @@ namespace fsi {
 namespace {
 
 // The overrides of level i (0-based): sizes / r^i, ε · r^(−i p).
-std::vector<std::string> level_overrides(const Case& base, int i, double ratio) {
+std::vector<std::string> level_overrides(const Case& base, int i, double ratio, const std::string& refine) {
   const double scale = std::pow(ratio, -i);
-  std::vector<std::string> sets = {"structure.h=" + shortest(base.structure.h * scale)};
-  if (base.fluid) {
+  std::vector<std::string> sets;
+  if (refine != "fluid") sets.push_back("structure.h=" + shortest(base.structure.h * scale));
+  if (base.fluid && refine != "structure") {
     sets.push_back("fluid.h=" + shortest(base.fluid->h * scale));
     if (base.fluid->h_near > 0) sets.push_back("fluid.h_near=" + shortest(base.fluid->h_near * scale));
     const double p = base.coupling.eps_power();
@@ -26,7 +27,7 @@ std::vector<std::string> level_overrides(const Case& base, int i, double ratio) 
 
 std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vector<std::string>& overrides,
                                    int levels, double ratio, const std::vector<std::string>& schemes,
-                                   const std::string& out_dir) {
+                                   const std::string& out_dir, const std::string& refine) {
   const Case base = load_case(case_path, overrides);
   std::vector<std::string> runs = schemes;
   if (runs.empty()) runs.push_back(base.coupling.scheme);
@@ -35,7 +36,7 @@ std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vect
   for (std::size_t s = 0; s < schemes_run; ++s)
     for (int i = 0; i < levels; ++i) {
       std::vector<std::string> sets = overrides;
-      const std::vector<std::string> sizes = level_overrides(base, i, ratio);
+      const std::vector<std::string> sizes = level_overrides(base, i, ratio, refine);
       sets.insert(sets.end(), sizes.begin(), sizes.end());
       if (base.fluid) sets.push_back("coupling.scheme=" + runs[s]);
       const std::string dir = "level-" + std::to_string(i + 1) + (s == 0 ? "" : "-" + runs[s]);

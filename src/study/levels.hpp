@@ -1,6 +1,10 @@
 // The levels of a refinement study: the case with every size key divided by r^i
 // (structure.h, fluid.h, fluid.h_near), ε following coupling.eps_rule, each level's
 // output in its own directory. All levels are built and validated before any runs.
+// `refine` = "fluid" or "structure" refines one mesh only, the other kept as given:
+// the two meshes' errors can have opposite signs (docs/validation.md), so refined
+// together they may cancel into a sequence without an order; refined apart, each
+// source's order and GCI can be measured.
 #pragma once
 
 #include <string>
@@ -21,6 +25,6 @@ struct LevelSpec {
 // refuses (a size beyond the limits, say).
 std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vector<std::string>& overrides,
                                    int levels, double ratio, const std::vector<std::string>& schemes,
-                                   const std::string& out_dir);
+                                   const std::string& out_dir, const std::string& refine = "all");
 
 }  // namespace fsi

@@ -66,6 +66,30 @@ TEST(Converge, ComparesSchemesAndScalesEpsWithTheRule) {
   fs::remove_all(dir);
 }
 
+// --refine fluid keeps the structure's mesh as given and refines the fluid's sizes
+// (and ε by its rule); --refine structure the other way round.
+TEST(Converge, RefinesOneMeshOnly) {
+  const fs::path dir = testing::scratch_dir("converge-refine");
+  const std::string base = "converge " + kFsi + " -q --set fluid.h=0.04 --set structure.h=0.03 --set fluid.chi=area-fraction "
+                           "--set coupling.scheme=aitken --set coupling.omega=1 --set coupling.eps_rule=h^2 ";
+  ASSERT_EQ(testing::run_cli(base + "--refine fluid --out fluid", dir).status, 0);
+  ASSERT_EQ(testing::run_cli(base + "--refine structure --out structure", dir).status, 0);
+  const auto f = nlohmann::json::parse(testing::slurp(dir / "fluid/summary.json"));
+  const auto s = nlohmann::json::parse(testing::slurp(dir / "structure/summary.json"));
+  EXPECT_EQ(f["refine"], "fluid");
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_DOUBLE_EQ(f["levels"][i]["structure_h"].get<double>(), 0.03);
+    EXPECT_DOUBLE_EQ(f["levels"][i]["fluid_h"].get<double>(), 0.04 / std::pow(2, i));
+    EXPECT_DOUBLE_EQ(f["levels"][i]["eps"].get<double>(), 1e-5 / std::pow(4, i));
+    EXPECT_DOUBLE_EQ(s["levels"][i]["structure_h"].get<double>(), 0.03 / std::pow(2, i));
+    EXPECT_DOUBLE_EQ(s["levels"][i]["fluid_h"].get<double>(), 0.04);
+    EXPECT_DOUBLE_EQ(s["levels"][i]["eps"].get<double>(), 1e-5);
+  }
+  // Level 1 is the same case in both studies.
+  EXPECT_EQ(f["quantities"]["max_displacement"]["values"][0], s["quantities"]["max_displacement"]["values"][0]);
+  fs::remove_all(dir);
+}
+
 struct BadStudy {
   std::string label, args;
   std::vector<std::string> expected;
@@ -92,6 +116,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadStudy{"ratio_below_one", "--ratio 0.5", {"--ratio 0.5"}},
                       BadStudy{"scheme_unknown", "--schemes aitken,newton", {"--schemes", "newton"}},
                       BadStudy{"scheme_twice", "--schemes aitken,aitken", {"--schemes", "twice"}},
+                      BadStudy{"refine_unknown", "--refine both", {"--refine \"both\"", "all, fluid, structure"}},
+                      BadStudy{"refine_fluid_without_a_fluid", "--refine fluid", {"--refine fluid", "no fluid"}},
                       // Level 6 of 8 would need 4e5 triangles, over the limit: refused before level 1 runs.
                       BadStudy{"finest_level_too_fine", "--levels 8", {"level 6", "structure.h", "limit"}}),
     [](const auto& param_info) { return param_info.param.label; });
