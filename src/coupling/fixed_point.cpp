@@ -1,5 +1,7 @@
 #include "coupling/fixed_point.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,6 +97,11 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
   const Mesh& reference = p_.structure.mesh();
   const int nv = reference.num_vertices();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * nv);  // u⁰ = 0: feasible at rest
+  if (initial.size() != 0) {
+    if (initial.size() != u.size() || !initial.allFinite())
+      throw std::invalid_argument("FixedPointCoupling: the initial displacement does not fit the structure's mesh");
+    u = p_.structure.project(initial);  // feasible, so that χ and the QP start from a state the QP allows
+  }
   const ContactSolution* warm = nullptr;
   auto fail = [&](const std::string& phase, const std::string& what) {
     throw SolverFailure(phase + " failed at fixed-point iteration " +

@@ -73,6 +73,10 @@ class FixedPointCoupling {
   // (PenalisedStokes::complete()): the outputs that draw or write the whole fluid
   // need it; a run without them can leave it exact near the structure only.
   bool complete_at_end = true;
+  // u⁰ instead of the structure at rest (2nv, feasible: another run's ũ, say). A
+  // restart from another scheme's end state tells whether that state is a fixed
+  // point for this scheme too (study/converge.cpp).
+  Eigen::VectorXd initial;
 
   // Never throws for a failed solve: it stops, keeps the last good state and says
   // why in CouplingResult::failure (a SolverFailure or QpError in a phase, memory

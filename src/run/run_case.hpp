@@ -1,6 +1,7 @@
 // Runs one case end to end: meshes, solves, writes summary.json and the pictures.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
 
@@ -14,6 +15,8 @@ class SetupCache;
 struct RunOptions {
   std::function<void(const std::string&)> progress;  // one line per solver iteration
   SetupCache* cache = nullptr;  // reuse meshes and setups across runs (sweeps)
+  // The coupled run's u⁰ (FixedPointCoupling::initial); null: the structure at rest.
+  const Eigen::VectorXd* initial_displacement = nullptr;
 };
 
 struct RunResult {
@@ -23,6 +26,7 @@ struct RunResult {
   Json summary;
   std::string report;   // a paragraph for the user (the numbers, even after a failure)
   std::string failure;  // exit status 1: what failed, naming the phase
+  Eigen::VectorXd displacement;  // the final ũ (2nv; empty if none): a restart's u⁰
 };
 
 // Checks the output directory and the meshes against the case (InputError, exit 2:

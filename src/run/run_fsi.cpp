@@ -107,7 +107,7 @@ CouplingResult solve_fluid_alone(const Case& c, StructureSetup& s, FluidSetup& f
 }
 
 CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTimes& times,
-                      const std::function<void(const std::string&)>& progress) {
+                      const std::function<void(const std::string&)>& progress, const Eigen::VectorXd* initial) {
   const Mesh& ref = s.mesh();
   const FluidForce force = fluid_force_of(c, ref);
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, assemble_vector_mass(ref));
@@ -115,6 +115,7 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
                           c.coupling.tol, c.coupling.max_iterations);
   loop.progress = progress;
   loop.complete_at_end = c.output.png || c.output.vtu;
+  if (initial) loop.initial = *initial;
   CouplingResult result = loop.run();
   for (const auto& r : result.history) {
     times.add("fluid", r.t_fluid);
@@ -230,7 +231,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   auto progress = [&options](const std::string& line) {
     if (options.progress) options.progress(line);
   };
-  CouplingResult result = fluid_only ? solve_fluid_alone(c, s, f, times) : couple(c, s, f, times, progress);
+  CouplingResult result = fluid_only ? solve_fluid_alone(c, s, f, times) : couple(c, s, f, times, progress, options.initial_displacement);
 
   // The final state: ũ (the solution if converged; after a failure the last good
   // one) and the last successful fluid solution.
@@ -248,9 +249,11 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   const ContactSummary cs = fluid_only ? ContactSummary{} : summarize_contact(*s.solver, result.structure);
 
   RunResult r;
+  r.displacement = u;
   Json& j = r.summary;
   j = summary_header(c);
   j["mesh"] = {{"structure", to_json(s_stats)}, {"fluid", to_json(f_stats)}};
+  j["initial_state"] = options.initial_displacement ? "given" : "rest";
   if (band) {
     j["mesh"]["fluid"]["h_near"] = c.fluid->h_near;
     j["mesh"]["fluid"]["band_box"] = *band;
@@ -268,6 +271,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   if (!fluid_only) {
     j["paper_k"] = result.iterations - 1;  // the paper's counter k at the stop (§6)
     j["final_increment_l2"] = result.final_increment;
+    j["final_norm_l2"] = result.final_norm;  // ‖ũ‖_{L²(Ω_S0)}: the scale tol is measured against
   }
   j["fluid_velocity_l2_in_structure"] = norms.v;
   j["fluid_velocity_l2_in_structure_over_eps"] = norms.v / c.coupling.eps;

@@ -63,6 +63,8 @@ int exit_status_of(const Study& study) {
     if (r.result.exit_status == 1) status = 1;
     else if (r.result.exit_status == 3 && status == 0) status = 3;
   }
+  for (const Restart& r : study.restarts)
+    if (r.run.result.exit_status > 128) return interrupted_exit_status();
   return status;
 }
 
@@ -87,6 +89,43 @@ void run_levels(Study& study, SetupCache& cache, const ConvergeOptions& options)
     run.wall_s = clock.elapsed();
     run.status = status_of(run.result);
     if (options.progress) options.progress(prefix + run.result.report + " (" + approx(run.wall_s, 3) + " s)");
+  }
+}
+
+// Where a scheme ended apart from the study's own at a level (max |u| beyond
+// agreement_allowed), it is rerun from the study's end state (issue 12, item 5).
+void run_restarts(Study& study, SetupCache& cache, const ConvergeOptions& options) {
+  if (study.schemes.size() < 2 || study.quantities.empty()) return;
+  const QuantityStudy& q = study.quantities.front();  // max |u|
+  const double allowed = agreement_allowed(q);
+  const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
+  for (std::size_t s = 1; s < study.schemes.size(); ++s) {
+    const std::vector<const LevelRun*> other = runs_of(study, study.schemes[s]);
+    for (std::size_t i = 0; i < other.size() && i < primary.size(); ++i) {
+      if (interrupt_requested()) return;
+      if (other[i]->status != "converged" || primary[i]->status != "converged") continue;
+      const double own = q.quantity.read(other[i]->result.summary), start = q.values[i];
+      if (!(std::abs(own - start) > allowed) || primary[i]->result.displacement.size() == 0) continue;
+      Restart r;
+      r.from = study.schemes.front();
+      r.run.spec = other[i]->spec;
+      r.run.spec.c.output.dir += "-restart";
+      r.start = start, r.own = own;
+      const std::string prefix = "[level " + std::to_string(r.run.spec.index) + "/" + std::to_string(study.levels) +
+                                 ", " + r.run.spec.scheme + " from " + r.from + "'s end state] ";
+      RunOptions run_options;
+      run_options.cache = &cache;
+      run_options.initial_displacement = &primary[i]->result.displacement;
+      if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
+      const Stopwatch clock;
+      r.run.result = run_case(r.run.spec.c, run_options);
+      r.run.wall_s = clock.elapsed();
+      r.run.status = status_of(r.run.result);
+      r.value = r.run.result.summary.is_null() ? NAN : q.quantity.read(r.run.result.summary);
+      judge_restart(r, allowed);
+      if (options.progress) options.progress(prefix + r.verdict);
+      study.restarts.push_back(std::move(r));
+    }
   }
 }
 
@@ -125,6 +164,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   run_levels(study, cache, options);
 
   evaluate(study, base.fluid.has_value());
+  run_restarts(study, cache, options);
   result.report = convergence_markdown(study);
   out.write("convergence.csv", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << convergence_csv(study); }); });
   out.write("convergence.md", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << result.report; }); });

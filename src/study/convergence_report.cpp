@@ -11,13 +11,17 @@
 namespace fsi {
 namespace {
 
-// The size that characterises a level: the fluid's at the structure, or the
-// structure's own for a contact-only study.
 // The size the levels refine: the fluid's at the structure, or the structure's when
 // only the structure is refined (or there is no fluid).
 double size_of(const Study& s, const Case& c) {
   return c.fluid && s.refine != "structure" ? c.fluid->size_near() : c.structure.h;
 }
+
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+std::string cell(double v, int digits = 6) { return std::isfinite(v) ? approx(v, digits) : "–"; }
+
+}  // namespace
 
 std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) {
   std::vector<const LevelRun*> out;
@@ -26,11 +30,36 @@ std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) 
   return out;
 }
 
-Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+double agreement_allowed(const QuantityStudy& q) {
+  const double gci = q.estimate.gci_abs;
+  const double base = std::isfinite(gci) && gci > 0 ? 0.1 * gci : 1e-6 * std::abs(q.values.empty() ? 0.0 : q.values.back());
+  return std::max(base, q.coupling_floor);
+}
 
-std::string cell(double v, int digits = 6) { return std::isfinite(v) ? approx(v, digits) : "–"; }
-
-}  // namespace
+// The fixed point is the map's, whatever the scheme: a scheme restarted from another's
+// end state either stays there (that state is a fixed point for it too, so the map has
+// two where the schemes' own runs ended), or leaves it (that end state was a stop
+// short of a fixed point, which a tighter coupling.tol would have gone on from).
+void judge_restart(Restart& r, double allowed) {
+  const std::string other = r.run.spec.scheme;
+  const Json& s = r.run.result.summary;
+  const int passes = s.is_object() && s.contains("iterations") && s["iterations"].is_number() ? s["iterations"].get<int>() : 0;
+  if (r.run.status != "converged") {
+    r.verdict = other + " restarted from " + r.from + "'s end state did not converge (" + r.run.status + ")";
+  } else if (passes == 1) {
+    r.verdict = other + " restarted from " + r.from + "'s end state stops at once (its first increment is below "
+                "coupling.tol): within that tolerance both end states are fixed points, " + approx(std::abs(r.own - r.start), 3) +
+                " apart in max |u|; rerun with a smaller coupling.tol to tell whether they are distinct";
+  } else if (std::abs(r.value - r.start) <= allowed) {
+    r.verdict = other + " restarted from " + r.from + "'s end state stays there: both end states are fixed points "
+                "(distinct solutions on this level)";
+  } else if (std::abs(r.value - r.own) <= allowed) {
+    r.verdict = other + " restarted from " + r.from + "'s end state returns to its own: " + r.from +
+                "'s end state is not a fixed point (a stop short of one: tighten coupling.tol)";
+  } else {
+    r.verdict = other + " restarted from " + r.from + "'s end state reaches a third state";
+  }
+}
 
 void evaluate(Study& study, bool with_fluid) {
   const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
@@ -52,10 +81,14 @@ void evaluate(Study& study, bool with_fluid) {
     }
     for (double d : qs.scheme_difference)
       if (std::isfinite(d)) qs.max_scheme_difference = std::isfinite(qs.max_scheme_difference) ? std::max(qs.max_scheme_difference, d) : d;
-    const double allowed = std::isfinite(qs.estimate.gci_abs) && qs.estimate.gci_abs > 0
-                               ? 0.1 * qs.estimate.gci_abs
-                               : 1e-6 * std::abs(qs.values.empty() ? 0.0 : qs.values.back());
-    qs.schemes_agree = !(qs.max_scheme_difference > allowed);
+    if (with_fluid && !primary.empty()) {
+      const Json& s = primary.back()->result.summary;
+      const double norm = s.is_object() && s.contains("final_norm_l2") && s["final_norm_l2"].is_number()
+                              ? s["final_norm_l2"].get<double>() : NAN;
+      if (norm > 0 && std::isfinite(qs.values.back()))
+        qs.coupling_floor = std::abs(qs.values.back()) * primary.back()->spec.c.coupling.tol / norm;
+    }
+    qs.schemes_agree = !(qs.max_scheme_difference > agreement_allowed(qs));
     study.quantities.push_back(std::move(qs));
   }
   // The stopping test's increment is an L² norm over Ω_S0 (m²): a displacement change
@@ -120,6 +153,9 @@ std::string convergence_markdown(const Study& study) {
        << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
        << " |\n";
   }
+  for (const Restart& r : study.restarts)
+    md << "\nLevel " << r.run.spec.index << ": " << r.verdict << " (max |u| " << cell(r.start, 8) << " → "
+       << cell(r.value, 8) << "; from rest " << r.run.spec.scheme << " ended at " << cell(r.own, 8) << ").\n";
   const std::string note = tolerance_note(study);
   if (!note.empty()) md << "\nNote: " << note << ".\n";
   return md.str();
@@ -181,8 +217,15 @@ Json convergence_json(const Study& study) {
                                    {"scheme_difference", diffs},
                                    {"schemes_agree", q.schemes_agree}};
   }
+  Json restarts = Json::array();
+  for (const Restart& r : study.restarts)
+    restarts.push_back({{"level", r.run.spec.index}, {"scheme", r.run.spec.scheme}, {"from", r.from},
+                        {"start", number_or_null(r.start)}, {"own", number_or_null(r.own)},
+                        {"value", number_or_null(r.value)}, {"status", r.run.status}, {"verdict", r.verdict},
+                        {"dir", r.run.spec.c.output.dir}});
   return {{"ratio", study.ratio},
           {"refine", study.refine},
+          {"restarts", restarts},
           {"schemes", study.schemes},
           {"levels", levels},
           {"quantities", quantities},

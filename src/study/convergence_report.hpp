@@ -28,7 +28,22 @@ struct QuantityStudy {
   // none converged beside the study's own, or the quantity is missing).
   std::vector<double> scheme_difference;
   double max_scheme_difference = NAN;
-  bool schemes_agree = true;        // every difference ≤ 0.1 GCI (≤ 1e-6 |φ| without a GCI)
+  bool schemes_agree = true;        // every difference ≤ agreement_allowed
+  // What coupling.tol leaves undecided in this quantity: the relative change the
+  // stopping test lets pass, tol / ‖ũ‖_{L²(Ω_S0)} at the finest level, times |φ|
+  // (0 without a fluid).
+  double coupling_floor = 0;
+};
+
+// Where a scheme ended apart from the study's scheme at a level, that scheme rerun
+// from the study's end state (issue 12, item 5): does it stay there?
+struct Restart {
+  LevelRun run;          // its spec: the other scheme's level, output dir "<dir>-restart"
+  std::string from;      // the study's scheme, whose end state is u⁰
+  double start = NAN;    // max |u| of that end state
+  double own = NAN;      // max |u| of the scheme's own run from rest
+  double value = NAN;    // max |u| where the restart ended
+  std::string verdict;   // what that says (see verdict_of in convergence_report.cpp)
 };
 
 struct Study {
@@ -38,11 +53,23 @@ struct Study {
   std::vector<std::string> schemes;
   std::vector<LevelRun> runs;        // level-major: level 1's schemes, then level 2's, ...
   std::vector<QuantityStudy> quantities;
+  std::vector<Restart> restarts;
   double tol_used = NAN, tol_advised = NAN;  // coupling.tol against 1e-3 of max |u|'s GCI (m²)
 };
 
 // Values, estimates and scheme differences from the runs.
 void evaluate(Study& study, bool with_fluid);
+
+// The largest difference between schemes that counts as agreement for q: 0.1 of its
+// GCI, or 1e-6 |φ| where there is no GCI; never below its coupling_floor (two runs
+// stopped by the same test need not agree better than the test can tell).
+double agreement_allowed(const QuantityStudy& q);
+
+// The study's runs of one scheme, coarsest level first.
+std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme);
+
+// Sets r.verdict from r's values and status.
+void judge_restart(Restart& r, double allowed);
 
 // "" or why coupling.tol is too coarse for the study (tol_used > tol_advised).
 std::string tolerance_note(const Study& study);
