@@ -30,6 +30,18 @@ std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) 
   return out;
 }
 
+static void choose_error_bar(QuantityStudy& q) {
+  const ConvergenceEstimate& e = q.estimate;
+  const bool asymptotic = e.asymptotic.value_or(false);
+  if (std::isfinite(e.gci_abs) && (asymptotic || !e.asymptotic.has_value())) {
+    q.error_bar = e.gci_abs, q.error_bar_method = "GCI";
+  } else if (std::isfinite(q.least_squares.uncertainty)) {
+    q.error_bar = q.least_squares.uncertainty, q.error_bar_method = "least squares";
+  } else if (std::isfinite(e.error_bar)) {
+    q.error_bar = e.error_bar, q.error_bar_method = "oscillation range";
+  }
+}
+
 double agreement_allowed(const QuantityStudy& q) {
   const double gci = q.estimate.gci_abs;
   const double base = std::isfinite(gci) && gci > 0 ? 0.1 * gci : 1e-6 * std::abs(q.values.empty() ? 0.0 : q.values.back());
@@ -65,10 +77,15 @@ void evaluate(Study& study, bool with_fluid) {
   const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
   study.quantities.clear();
   for (const Quantity& q : quantities(with_fluid)) {
-    QuantityStudy qs{q, {}, {}, {}, NAN, true};
+    QuantityStudy qs;
+    qs.quantity = q;
     for (const LevelRun* r : primary) qs.values.push_back(r->result.summary.is_null() ? NAN : q.read(r->result.summary));
     const bool complete = std::all_of(qs.values.begin(), qs.values.end(), [](double v) { return std::isfinite(v); });
     if (complete) qs.estimate = estimate_convergence(qs.values, study.ratio);
+    std::vector<double> h;
+    for (const LevelRun* r : primary) h.push_back(size_of(study, r->spec.c));
+    if (complete) qs.least_squares = least_squares_estimate(h, qs.values);
+    choose_error_bar(qs);
     qs.scheme_difference.assign(qs.values.size(), NAN);
     for (std::size_t s = 1; s < study.schemes.size(); ++s) {
       const std::vector<const LevelRun*> other = runs_of(study, study.schemes[s]);
@@ -148,7 +165,7 @@ std::string convergence_markdown(const Study& study) {
     const ConvergenceEstimate& e = q.estimate;
     md << "| " << q.quantity.name << " | " << to_string(e.kind) << " | " << cell(e.observed_order, 3) << " | "
        << cell(e.extrapolated, 8) << " | " << (std::isfinite(e.gci) ? approx(100 * e.gci, 3) + " %" : "–") << " | "
-       << (std::isfinite(e.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(e.error_bar, 2) : "–") << " | "
+       << (std::isfinite(q.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + q.error_bar_method + ")" : "–") << " | "
        << (e.asymptotic ? (*e.asymptotic ? "yes" : "no") : "needs 4 levels") << " | "
        << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
        << " |\n";
@@ -212,7 +229,15 @@ Json convergence_json(const Study& study) {
                                    {"extrapolated", number_or_null(e.extrapolated)},
                                    {"gci", number_or_null(e.gci)},
                                    {"gci_abs", number_or_null(e.gci_abs)},
-                                   {"error_bar", number_or_null(e.error_bar)},
+                                   {"error_bar", number_or_null(q.error_bar)},
+                                   {"error_bar_method", q.error_bar_method},
+                                   {"least_squares",
+                                    {{"limit", number_or_null(q.least_squares.limit)},
+                                     {"order", number_or_null(q.least_squares.order)},
+                                     {"sigma", number_or_null(q.least_squares.sigma)},
+                                     {"safety", number_or_null(q.least_squares.safety)},
+                                     {"uncertainty", number_or_null(q.least_squares.uncertainty)},
+                                     {"order_at_bound", q.least_squares.order_at_bound}}},
                                    {"asymptotic", e.asymptotic ? Json(*e.asymptotic) : Json(nullptr)},
                                    {"scheme_difference", diffs},
                                    {"schemes_agree", q.schemes_agree}};

@@ -9,6 +9,7 @@
 #include "run/run_case.hpp"
 #include "study/levels.hpp"
 #include "study/quantities.hpp"
+#include "study/least_squares.hpp"
 #include "study/richardson.hpp"
 
 namespace fsi {
@@ -24,6 +25,13 @@ struct QuantityStudy {
   Quantity quantity;
   std::vector<double> values;       // the study's scheme, coarsest level first
   ConvergenceEstimate estimate;
+  LeastSquaresEstimate least_squares;  // four levels or more
+  // The finest value's error bar (absolute): the GCI where the finest levels are in
+  // the asymptotic range (or three levels converge monotonically); with four levels or
+  // more otherwise, the least-squares uncertainty; for three oscillating levels the
+  // range bound of richardson.hpp. NaN: none can be given (diverging).
+  double error_bar = NAN;
+  std::string error_bar_method;  // "GCI" | "least squares" | "oscillation range" | 
   // Other schemes: per level the largest |φ_scheme − φ| between converged runs (NaN:
   // none converged beside the study's own, or the quantity is missing).
   std::vector<double> scheme_difference;
