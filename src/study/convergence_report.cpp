@@ -159,13 +159,16 @@ std::string convergence_markdown(const Study& study) {
     for (const auto& q : study.quantities) md << ' ' << cell(q.values[static_cast<std::size_t>(r->spec.index - 1)], 8) << " |";
     md << '\n';
   }
-  md << "\n| quantity | kind | observed order | extrapolated | GCI | finest ± error bar | asymptotic | schemes' largest "
-        "difference |\n|---|---|---|---|---|---|---|---|\n";
+  md << "\n| quantity | kind | observed order | extrapolated | GCI | least-squares limit (order) | finest ± error bar | "
+        "asymptotic | schemes' largest difference |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& q : study.quantities) {
     const ConvergenceEstimate& e = q.estimate;
     md << "| " << q.quantity.name << " | " << to_string(e.kind) << " | " << cell(e.observed_order, 3) << " | "
        << cell(e.extrapolated, 8) << " | " << (std::isfinite(e.gci) ? approx(100 * e.gci, 3) + " %" : "–") << " | "
-       << (std::isfinite(q.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + q.error_bar_method + ")" : "–") << " | "
+       << (std::isfinite(q.least_squares.limit)
+               ? cell(q.least_squares.limit, 8) + " (" + approx(q.least_squares.order, 3) + ")"
+               : std::string("–"))
+       << " | " << (std::isfinite(q.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + q.error_bar_method + ")" : "–") << " | "
        << (e.asymptotic ? (*e.asymptotic ? "yes" : "no") : "needs 4 levels") << " | "
        << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
        << " |\n";

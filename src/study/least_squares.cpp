@@ -75,6 +75,7 @@ LeastSquaresEstimate least_squares_estimate(const std::vector<double>& h, const 
   e.safety = (e.order >= 0.95 && e.order <= kMaxOrder && !e.order_at_bound && e.sigma < spread) ? 1.25 : 3.0;
   e.uncertainty = e.safety * std::abs(phi1 - e.limit) + e.sigma +
                   std::abs(phi1 - (e.limit + e.coefficient * std::pow(h[finest], e.order)));
+  if (e.order_at_bound) e.uncertainty = std::max(e.uncertainty, 1.25 * spread * static_cast<double>(n - 1));
   return e;
 }
 

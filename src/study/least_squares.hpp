@@ -8,7 +8,12 @@
 //   is 2; a fitted p beyond that is noise, below 0.5 no convergence is shown);
 //   σ the fit's standard deviation, Δφ = (max φ − min φ)/(n − 1) the data's spread;
 //   Fs = 1.25 if 0.95 ≤ p ≤ 2.05 and σ < Δφ (a good fit of a plausible order), else 3;
-//   U = Fs |φ₁ − φ₀| + σ + |φ₁ − (φ₀ + α h₁^p)|, the uncertainty of the finest value φ₁.
+//   U = Fs |φ₁ − φ₀| + σ + |φ₁ − (φ₀ + α h₁^p)|, the uncertainty of the finest value φ₁;
+//   where the best p lies outside [0.5, 2.05] (clamped: the data show no plausible
+//   order), U is at least 1.25 Δ_M, Δ_M = max φ − min φ over the levels.
+// Simplified from the paper: it fits p = 1, p = 2 and their sum besides and picks by
+// σ; here p is clamped instead (measured on §7.2: the p = 1 and p = 2 fits' limits lie
+// within the U so computed, docs/validation.md).
 #pragma once
 
 #include <cmath>
