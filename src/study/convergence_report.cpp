@@ -30,6 +30,12 @@ std::vector<const LevelRun*> runs_of(const Study& s, const std::string& scheme) 
   return out;
 }
 
+// A quantity some level does not have (no contact there, a failed run) has no kind.
+static std::string kind_of(const QuantityStudy& q) {
+  const bool complete = std::all_of(q.values.begin(), q.values.end(), [](double v) { return std::isfinite(v); });
+  return complete ? to_string(q.estimate.kind) : "not at every level";
+}
+
 static void choose_error_bar(QuantityStudy& q) {
   const ConvergenceEstimate& e = q.estimate;
   const bool asymptotic = e.asymptotic.value_or(false);
@@ -163,7 +169,7 @@ std::string convergence_markdown(const Study& study) {
         "asymptotic | schemes' largest difference |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& q : study.quantities) {
     const ConvergenceEstimate& e = q.estimate;
-    md << "| " << q.quantity.name << " | " << to_string(e.kind) << " | " << cell(e.observed_order, 3) << " | "
+    md << "| " << q.quantity.name << " | " << kind_of(q) << " | " << cell(e.observed_order, 3) << " | "
        << cell(e.extrapolated, 8) << " | " << (std::isfinite(e.gci) ? approx(100 * e.gci, 3) + " %" : "–") << " | "
        << (std::isfinite(q.least_squares.limit)
                ? cell(q.least_squares.limit, 8) + " (" + approx(q.least_squares.order, 3) + ")"
@@ -228,7 +234,7 @@ Json convergence_json(const Study& study) {
                                    {"values", values},
                                    {"observed_order", number_or_null(e.observed_order)},
                                    {"orders", orders},
-                                   {"kind", to_string(e.kind)},
+                                   {"kind", kind_of(q)},
                                    {"extrapolated", number_or_null(e.extrapolated)},
                                    {"gci", number_or_null(e.gci)},
                                    {"gci_abs", number_or_null(e.gci_abs)},

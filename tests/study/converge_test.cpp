@@ -28,6 +28,8 @@ TEST(Converge, WritesEveryOutputForTheContactProblem) {
   const auto j = nlohmann::json::parse(testing::slurp(dir / "study/summary.json"));
   EXPECT_EQ(j["problem"], "convergence");
   EXPECT_EQ(j["status"], "converged");
+  EXPECT_GT(j["timing_s"]["meshes"].get<double>(), 0.0);
+  EXPECT_GT(j["timing_s"]["runs"].get<double>(), 0.0);
   ASSERT_EQ(j["levels"].size(), 4u);
   for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(j["levels"][i]["structure_h"].get<double>(), 0.00135 / std::pow(2, i));
   const auto& q = j["quantities"]["max_displacement"];
