@@ -128,6 +128,20 @@ void check_structure_in_box(const Case& c, const Origin& o) {
          "< fluid.H1 = " + shortest(f.H1) + " (" + o.value("fluid.H1", f.H1, "structure.H") + ")");
 }
 
+// fluid.method = "body-fitted" meshes D minus the deformed structure on every pass, with
+// hF everywhere: a fixed mesh file or a band of the fixed mesh cannot be honoured.
+void check_fluid_method(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  if (f.method != "body-fitted") return;
+  if (!f.mesh.empty())
+    fail(o, "fluid.method", "= \"body-fitted\" remeshes the fluid around the deformed structure on every pass, "
+                            "so it cannot use the mesh file fluid.mesh = \"" + f.mesh + "\"",
+         "\"penalised\" with fluid.mesh, or \"body-fitted\" without it");
+  if (f.h_near > 0)
+    fail(o, "fluid.method", "= \"body-fitted\" does not refine a band (fluid.h_near = " + shortest(f.h_near) + ")",
+         "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
+}
+
 }  // namespace
 
 void check_case(const Case& c, const Origin& origin) {
@@ -141,6 +155,7 @@ void check_case(const Case& c, const Origin& origin) {
   check_strain(c, origin);
   if (!c.fluid) return;
   check_structure_in_box(c, origin);
+  check_fluid_method(c, origin);
   if (c.fluid->mesh.empty()) check_fluid_box(c, origin);
 }
 
