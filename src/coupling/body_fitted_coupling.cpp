@@ -57,7 +57,7 @@ void BodyFittedCoupling::iterate(CouplingResult& result) {
       if (next.qp.active_count() > 0)
         fail("the body-fitted fluid step",
              "the structure touches the obstacle (" + std::to_string(next.qp.active_count()) +
-                 " active contact rows): contact cannot be body-fitted; fluid.method = "
+                 (next.qp.active_count() == 1 ? " active contact row" : " active contact rows") + "): contact cannot be body-fitted; fluid.method = "
                  "\"body-fitted\" is a check "
                  "for configurations without contact (use \"penalised\")");
       result.structure = std::move(next);
