@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
+#include "coupling/phase_guard.hpp"
 
 namespace fsi {
 
@@ -66,32 +67,6 @@ CouplingResult FixedPointCoupling::run() {
   result.projections = p_.relaxation.projections();
   return result;
 }
-
-namespace {
-
-// Runs one phase of a pass. What a phase is expected to meet (a solver's failure: a
-// SolverFailure or a QpError; memory running out) ends the loop as a SolverFailure
-// naming the phase and the pass. Anything else (std::logic_error,
-// std::invalid_argument, std::out_of_range from our own code) is a bug: it
-// propagates, not reported as a failed solve.
-template <class Phase>
-auto guarded(const std::string& phase, int iteration, Phase&& run) -> decltype(run()) {
-  auto fail = [&](const std::string& what) {
-    return SolverFailure(phase + " failed at fixed-point iteration " + std::to_string(iteration) +
-                         ": " + what);
-  };
-  try {
-    return run();
-  } catch (const SolverFailure& e) {
-    throw fail(e.what());
-  } catch (const QpError& e) {
-    throw fail(e.what());
-  } catch (const std::bad_alloc&) {
-    throw fail("out of memory");
-  }
-}
-
-}  // namespace
 
 void FixedPointCoupling::iterate(CouplingResult& result) {
   const Mesh& reference = p_.structure.mesh();

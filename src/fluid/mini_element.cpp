@@ -36,6 +36,20 @@ CondensedElement condensed_mini_element(const P1Triangle& T, double mu, double k
   return out;
 }
 
+ElementLoad element_load(const P1Triangle& T, const std::function<Point(const Point&)>& f,
+                         const TriangleRule& rule) {
+  ElementLoad load;
+  for (std::size_t q = 0; q < rule.w.size(); ++q) {
+    const Eigen::Vector3d& l = rule.lambda[q];
+    const Point fq = f(T.point(l)) * (rule.w[q] * T.area);
+    for (int c = 0; c < 2; ++c) {
+      for (int a = 0; a < 3; ++a) load.F_V[3 * c + a] += fq[c] * l[a];
+      load.F_b[c] += fq[c] * bubble_value(l);
+    }
+  }
+  return load;
+}
+
 BubbleBlock bubble_block(const P1Triangle& T, double mu, double kappa) {
   // The viscous term does not couple the bubble with P1 velocities (∇λ_a is
   // constant on T and ∫_T ∇b = 0): only the penalty mass and the divergence do.

@@ -7,8 +7,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 
 #include "fem/p1.hpp"
+#include "fem/quadrature.hpp"
 
 namespace fsi {
 
@@ -21,6 +23,10 @@ struct ElementLoad {
   Eigen::Matrix<double, 6, 1> F_V = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Vector2d F_b = Eigen::Vector2d::Zero();
 };
+
+// ElementLoad of f on T by `rule` (degree 6 for the cubic bubble times a smooth f).
+ElementLoad element_load(const P1Triangle& T, const std::function<Point(const Point&)>& f,
+                         const TriangleRule& rule);
 
 // The bubble's own rows: A_bb β + E [V; P] = F_b.
 struct BubbleBlock {

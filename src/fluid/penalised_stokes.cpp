@@ -11,19 +11,6 @@
 namespace fsi {
 namespace {
 
-ElementLoad element_load(const P1Triangle& T, const VectorField& f, const TriangleRule& rule) {
-  ElementLoad load;
-  for (std::size_t q = 0; q < rule.w.size(); ++q) {
-    const Eigen::Vector3d& l = rule.lambda[q];
-    const Point fq = f(T.point(l)) * (rule.w[q] * T.area);
-    for (int c = 0; c < 2; ++c) {
-      for (int a = 0; a < 3; ++a) load.F_V[3 * c + a] += fq[c] * l[a];
-      load.F_b[c] += fq[c] * bubble_value(l);
-    }
-  }
-  return load;
-}
-
 // Two vertices are adjacent iff they share a triangle (a vertex is its own neighbour).
 std::vector<std::vector<int>> vertex_adjacency(const Mesh& mesh) {
   std::vector<std::vector<int>> adjacent(mesh.num_vertices());

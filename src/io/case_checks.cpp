@@ -140,13 +140,6 @@ void check_fluid_band(const Case& c, const Origin& o) {
              ") by at least fluid.h_near = " + shortest(f.h_near) + " each way");
 }
 
-// The body-fitted fluid (issue 12, item 4) is not part of this program yet: a case
-// asking for it is refused rather than run with the penalised method.
-void check_fluid_method(const Case& c, const Origin& o) {
-  if (c.fluid->method != "penalised")
-    fail(o, "fluid.method", "= \"" + c.fluid->method + "\" is not available in this version", "\"penalised\"");
-}
-
 // The structure at rest inside the fluid box (its clamped side on Σ1).
 void check_structure_in_box(const Case& c, const Origin& o) {
   const auto& s = c.structure;
@@ -157,6 +150,20 @@ void check_structure_in_box(const Case& c, const Origin& o) {
   if (!(s.H < f.H1))
     fail(o, "structure.H", "= " + shortest(s.H) + " does not fit in the fluid box",
          "< fluid.H1 = " + shortest(f.H1) + " (" + o.value("fluid.H1", f.H1, "structure.H") + ")");
+}
+
+// fluid.method = "body-fitted" meshes D minus the deformed structure on every pass, with
+// hF everywhere: a fixed mesh file or a band of the fixed mesh cannot be honoured.
+void check_fluid_method(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  if (f.method != "body-fitted") return;
+  if (!f.mesh.empty())
+    fail(o, "fluid.method", "= \"body-fitted\" remeshes the fluid around the deformed structure on every pass, "
+                            "so it cannot use the mesh file fluid.mesh = \"" + f.mesh + "\"",
+         "\"penalised\" with fluid.mesh, or \"body-fitted\" without it");
+  if (f.h_near > 0)
+    fail(o, "fluid.method", "= \"body-fitted\" does not refine a band (fluid.h_near = " + shortest(f.h_near) + ")",
+         "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
 }
 
 }  // namespace

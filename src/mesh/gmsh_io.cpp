@@ -97,6 +97,22 @@ Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
       {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D", limits);
 }
 
+Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g) {
+  return generate_fluid_mesh_around(g, {});
+}
+
+Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g, const GmshLimits& limits) {
+  if (g.outline.size() < 3) throw MeshError("the structure's outline needs at least two segments");
+  const FluidGeometry& b = g.box;
+  const double u = reference_length(std::max(std::abs(b.L1), std::abs(b.H1) + std::abs(b.H2)));
+  BodyFittedGeometry scaled{{b.L1 / u, b.H1 / u, b.H2 / u, b.x0 / u, b.y0 / u, b.r / u, b.h / u},
+                            g.outline};
+  for (Point& p : scaled.outline) p /= u;
+  return generate(
+      "meshing the fluid around the structure", [&] { return mesh_fluid_around_in_gmsh(scaled); },
+      u, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5", "Gamma_u"}, "D", limits);
+}
+
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,
                     const std::string& domain_group) {
   return read_gmsh_file(path, boundary_groups, domain_group, {});

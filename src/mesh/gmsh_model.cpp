@@ -2,6 +2,7 @@
 
 #include <gmsh.h>
 
+#include <array>
 #include <map>
 #include <mutex>
 #include <set>
@@ -188,6 +189,48 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
                   {1, "Sigma_3", {right}},
                   {1, "Sigma_4", {top}},
                   {1, "Sigma_5", arcs}});
+}
+
+RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g) {
+  configure_gmsh(0);
+  namespace geo = gmsh::model::geo;
+  gmsh::model::add("fluid-around-structure");
+  const FluidGeometry& box = g.box;
+  const double h = box.h;
+  const int a = geo::addPoint(0, -box.H2, 0, h), b = geo::addPoint(box.L1, -box.H2, 0, h),
+            c = geo::addPoint(box.L1, box.H1, 0, h), d = geo::addPoint(0, box.H1, 0, h);
+  std::vector<int> points;  // the outline, from its lower end on x = 0 to its upper end
+  for (const Point& p : g.outline) points.push_back(geo::addPoint(p.x(), p.y(), 0, h));
+  const int bottom = geo::addLine(a, b), right = geo::addLine(b, c), top = geo::addLine(c, d);
+  const int left_above = geo::addLine(d, points.back()),
+            left_below = geo::addLine(points.front(), a);
+  // The fluid's outer loop runs down Σ1 to the structure, back along its outline and
+  // down Σ1 again. One mesh edge per outline segment: no vertex is added on it.
+  std::vector<int> outline, loop = {bottom, right, top, left_above};
+  for (std::size_t k = points.size() - 1; k > 0; --k) {
+    outline.push_back(geo::addLine(points[k], points[k - 1]));
+    loop.push_back(outline.back());
+  }
+  loop.push_back(left_below);
+  const int centre = geo::addPoint(box.x0, box.y0, 0, h);
+  const std::array<int, 4> quarter = {
+      // east, north, west, south
+      geo::addPoint(box.x0 + box.r, box.y0, 0, h), geo::addPoint(box.x0, box.y0 + box.r, 0, h),
+      geo::addPoint(box.x0 - box.r, box.y0, 0, h), geo::addPoint(box.x0, box.y0 - box.r, 0, h)};
+  std::vector<int> arcs;
+  for (int q = 0; q < 4; ++q)
+    arcs.push_back(geo::addCircleArc(quarter[q], centre, quarter[(q + 1) % 4]));
+  const int surface = geo::addPlaneSurface({geo::addCurveLoop(loop), geo::addCurveLoop(arcs)});
+  geo::synchronize();
+  for (int line : outline) gmsh::model::mesh::setTransfiniteCurve(line, 2);
+  mesh_2d(h);
+  return extract({{2, "D", {surface}},
+                  {1, "Sigma_1", {left_above, left_below}},
+                  {1, "Sigma_2", {bottom}},
+                  {1, "Sigma_3", {right}},
+                  {1, "Sigma_4", {top}},
+                  {1, "Sigma_5", arcs},
+                  {1, "Gamma_u", outline}});
 }
 
 RawMesh read_in_gmsh(const std::string& path) {

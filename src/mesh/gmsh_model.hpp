@@ -12,6 +12,7 @@ namespace fsi {
 
 struct StructureGeometry;
 struct FluidGeometry;
+struct BodyFittedGeometry;
 
 // gmsh::initialize, once per process, in the parent before the first fork: each
 // child then starts from the same initialised, empty Gmsh. Initialising in every
@@ -25,6 +26,8 @@ void initialise_gmsh_once();
 RawMesh mesh_structure_in_gmsh(const StructureGeometry& g);
 // Physical groups D (surface), Sigma_1 ... Sigma_5 (curves).
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g);
+// Physical groups D, Sigma_1 ... Sigma_5 and Gamma_u (one line per outline segment).
+RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g);
 // The file's physical groups of dimension 1 and 2, their elements, and Gmsh's
 // warnings and "Skipping ..." notes (it skips duplicated nodes, measured).
 RawMesh read_in_gmsh(const std::string& path);

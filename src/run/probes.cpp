@@ -21,4 +21,15 @@ Point resultant(const Eigen::VectorXd& load) {
   return load.size() ? Point(load.head(nv).sum(), load.tail(nv).sum()) : Point(0, 0);
 }
 
+Point resultant_off(const Eigen::VectorXd& load, const Mesh& mesh, int clamped) {
+  const int nv = mesh.num_vertices();
+  if (load.size() != 2 * nv) return Point(0, 0);
+  std::vector<char> held(nv, 0);
+  for (int v : mesh.vertices_on(clamped)) held[v] = 1;
+  Point F(0, 0);
+  for (int i = 0; i < nv; ++i)
+    if (!held[i]) F += Point(load[i], load[nv + i]);
+  return F;
+}
+
 }  // namespace fsi

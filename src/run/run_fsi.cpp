@@ -14,6 +14,7 @@
 #include "coupling/fixed_point.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
+#include "run/coupling_outputs.hpp"
 #include "run/fluid_outputs.hpp"
 #include "run/fluid_band.hpp"
 #include "run/fluid_setup.hpp"
@@ -26,18 +27,6 @@
 
 namespace fsi {
 namespace {
-
-void write_history(const std::string& path, const std::vector<IterationRecord>& history) {
-  write_atomically(path, [&](std::ostream& out) {
-    out << "iteration,increment_l2,omega,active_nodes,chi_triangles,fluid_reused,t_chi_s,t_fluid_s,"
-           "t_transfer_s,t_structure_s\n"
-        << std::setprecision(10);
-    for (const auto& r : history)
-      out << r.iteration << ',' << r.increment << ',' << r.omega << ',' << r.active_nodes << ','
-          << r.chi_triangles << ',' << (r.fluid_reused ? 1 : 0) << ',' << r.t_chi << ',' << r.t_fluid
-          << ',' << r.t_transfer << ',' << r.t_structure << '\n';
-  });
-}
 
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
@@ -155,10 +144,6 @@ FluidNorms fluid_norms(FluidSetup& f, const Mesh& deformed) {
   return n;
 }
 
-const char* status_of(const CouplingResult& r) {
-  return !r.failure.empty() ? "failed" : r.interrupted ? "interrupted" : r.converged ? "converged" : "iteration limit";
-}
-
 }  // namespace
 
 namespace {
@@ -195,6 +180,7 @@ std::string fsi_report(const Case& c, const CouplingResult& result, const FluidN
 }  // namespace
 
 RunResult run_fsi_case(const Case& c, const RunOptions& options) {
+  if (c.fluid->method == "body-fitted") return run_body_fitted_case(c, options);
   PhaseTimes times;
   const Stopwatch total;
   SetupCache local_cache;
@@ -280,6 +266,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["min_displacement_y"] = u2.minCoeff();
   j["tip_displacement"] = point_json(displacement_at(s.mesh(), u, tip_of(c)));
   j["structure_force"] = point_json(resultant(result.fluid_load));
+  j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
     j["contact"] = to_json(cs);
     j["kkt"] = to_json(result.structure.qp.kkt);
@@ -320,7 +307,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
       if (!fluid_only)
         out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
     }
-    if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history); });
+    if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history, false); });
     out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
   };
   write_outputs(c, r, files, [&](Json& summary) { summary["timing_s"] = timing_json(times, total.elapsed()); });

@@ -41,7 +41,7 @@ void check_level_meshes(const std::vector<LevelSpec>& specs, SetupCache& cache) 
   for (const LevelSpec& spec : specs) {
     try {
       cache.structure_mesh(spec.c);
-      if (spec.c.fluid) cache.fluid_mesh(spec.c);
+      if (spec.c.fluid && spec.c.fluid->method == "penalised") cache.fluid_mesh(spec.c);  // body-fitted: remeshed per pass
     } catch (const InputError& e) {
       throw InputError("level " + std::to_string(spec.index) + ": " + e.what());
     } catch (const SolverFailure&) {

@@ -33,6 +33,8 @@ const std::vector<Quantity>& quantities(bool with_fluid) {
     q.push_back({"fluid_velocity_l2_in_structure", "m^2/s", [](const Json& s) { return at(s, "fluid_velocity_l2_in_structure"); }});
     q.push_back({"structure_force_x", "N/m", [](const Json& s) { return component(s, "structure_force", 0); }});
     q.push_back({"structure_force_y", "N/m", [](const Json& s) { return component(s, "structure_force", 1); }});
+    q.push_back({"structure_load_x", "N/m", [](const Json& s) { return component(s, "structure_load", 0); }});
+    q.push_back({"structure_load_y", "N/m", [](const Json& s) { return component(s, "structure_load", 1); }});
     return q;
   }();
   return with_fluid ? coupled : structure;

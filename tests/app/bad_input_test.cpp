@@ -142,7 +142,6 @@ std::vector<BadInput> bad_inputs() {
       {"band_box_outside_the_fluid_box", kValid + "[fluid]\nh = 0.004\nh_near = 0.002\nband = [1, 0, 2, 0.1]\n", "", {"fluid.band", "does not meet the fluid box", "fluid.h_near = 0.002"}},
       {"h_near_with_a_mesh_file", kValid + "[fluid]\nh = 0.004\nh_near = 0.002\nmesh = \"box.msh\"\n", "", {"fluid.h_near = 0.002", "fluid.mesh is set"}},
       {"band_too_fine_for_the_limit", kValid + "[fluid]\nh = 0.004\n", "--set fluid.h_near=1e-6", {"fluid.h", "triangles", "fluid.h_near"}},
-      {"body_fitted_not_available", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=body-fitted", {"fluid.method = \"body-fitted\"", "not available", "\"penalised\""}},
       {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
       {"method_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=immersed", {"fluid.method", "body-fitted"}},
       {"omega_just_above_one", kValid + "[fluid]\n", "--set coupling.omega=1.0000001", {"coupling.omega = 1.0000001 is out of range", "(0, 1]"}},

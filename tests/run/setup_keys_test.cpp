@@ -36,7 +36,6 @@ TEST(SetupKeys, EveryCaseKeyIsInTheParameters) {
   EXPECT_GE(keys.size(), 30u);
   for (const std::string& key : keys) {
     if (key == "name" || key == "output.dir") continue;  // a name renames; a dir moves
-    if (key == "fluid.method") continue;  // "penalised", the default, is all it accepts today
     const Case c = load_case("", {key + "=" + other_value(key)});
     EXPECT_NE(to_json(c).dump(), to_json(base).dump()) << key << " is missing from summary.json's parameters";
   }
@@ -47,7 +46,6 @@ TEST(SetupKeys, EverySectionKeyAChangesItsSetupKey) {
   for (const std::string& key : case_keys()) {
     const std::string section = key.substr(0, key.find('.'));
     if (section == "coupling" || section == "output" || section == "name") continue;  // set per row, or no setup
-    if (key == "fluid.method") continue;  // "penalised", the default, is all it accepts today
     const Case c = load_case("", {key + "=" + other_value(key)});
     if (section == "fluid" || section == "obstacle") {
       EXPECT_NE(fluid_setup_key(c), fluid_setup_key(base)) << key;

@@ -1,0 +1,51 @@
+// The fixed point of §6 with the body-fitted fluid step (fluid.method = "body-fitted"):
+// given u^k,
+//   mesh of D \ φ^k(Ω_S0) → Stokes, v = 0 on Γ_u → load by the residual method
+//   (body_fitted_fluid.hpp) → contact QP → ũ^{k+1},
+// stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}):
+// the same stopping test, relaxation schemes and records as FixedPointCoupling, whose
+// fluid step (χ, the penalised solve, eq. 33) is what this replaces. A pass whose QP
+// finds contact is refused: the fluid between the structure and the obstacle
+// cannot be body-fitted.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "coupling/body_fitted_fluid.hpp"
+#include "coupling/fixed_point.hpp"
+
+namespace fsi {
+
+class BodyFittedCoupling {
+ public:
+  struct Parts {
+    ElasticContactSolver& structure;
+    const Eigen::VectorXd& b_applied;  // f_S and h_N part of b_S
+    BodyFittedFluid& fluid;
+    Relaxation& relaxation;
+  };
+  BodyFittedCoupling(Parts parts, double tol, int max_iterations);
+
+  std::function<void(const std::string&)> progress;  // one line per pass
+  // u⁰ instead of the structure at rest, as FixedPointCoupling::initial.
+  Eigen::VectorXd initial;
+
+  // As FixedPointCoupling::run: a failed phase stops the loop and is named in
+  // CouplingResult::failure; the last good state is kept.
+  CouplingResult run();
+
+  // The fluid step that produced the result's load (its mesh and fields), if any.
+  const BodyFittedStep* last_fluid() const { return last_fluid_.mesh ? &last_fluid_ : nullptr; }
+
+ private:
+  void iterate(CouplingResult& result);
+
+  Parts p_;
+  double tol_;
+  int max_iterations_;
+  SparseMatrix M_;  // L²(Ω_S0) mass, for the stopping test
+  BodyFittedStep last_fluid_;
+};
+
+}  // namespace fsi

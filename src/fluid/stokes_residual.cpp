@@ -1,0 +1,31 @@
+#include "fluid/stokes_residual.hpp"
+
+#include "fem/quadrature.hpp"
+#include "fluid/mini_element.hpp"
+
+namespace fsi {
+
+Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
+                                   const std::function<Point(const Point&)>& f,
+                                   const FluidSolution& s, const std::vector<int>& vertices) {
+  std::vector<int> column(mesh.num_vertices(), -1);
+  for (std::size_t k = 0; k < vertices.size(); ++k) column[vertices[k]] = static_cast<int>(k);
+  Eigen::Matrix2Xd R = Eigen::Matrix2Xd::Zero(2, static_cast<Eigen::Index>(vertices.size()));
+  const TriangleRule rule =
+      triangle_rule(6);  // as PenalisedStokes: the bubble (degree 3) × a smooth f
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    if (column[tri[0]] < 0 && column[tri[1]] < 0 && column[tri[2]] < 0) continue;
+    const P1Triangle T(mesh, t);
+    const CondensedElement e = condensed_mini_element(T, mu, 0.0, element_load(T, f, rule));
+    Vector9d z;  // [v1 at the 3 vertices, v2, p]
+    for (int a = 0; a < 3; ++a)
+      z[a] = s.v1[tri[a]], z[3 + a] = s.v2[tri[a]], z[6 + a] = s.p[tri[a]];
+    const Vector9d r = e.K * z - e.F;
+    for (int a = 0; a < 3; ++a)
+      if (column[tri[a]] >= 0) R.col(column[tri[a]]) += Eigen::Vector2d(r[a], r[3 + a]);
+  }
+  return R;
+}
+
+}  // namespace fsi

@@ -1,0 +1,29 @@
+// The fluid's force on a wall by the residual (volume) method (SPEC §10 "Forces"):
+// the weak residual of the momentum equation (25), without penalty, tested with the
+// P1 velocity basis functions φ_i e_c of the wall's vertices,
+//     R_{i,c} = ∫_D 2μ ε(v_h):ε(φ_i e_c) − ∫_D p_h div(φ_i e_c) − ∫_D f·φ_i e_c.
+// For the exact solution this is ∫_{∂D} σ(v,p) n · φ_i e_c (n out of the fluid): the
+// traction the fluid receives from the wall, so −R is the fluid's force on it, node by
+// node. Much more accurate than integrating σ(v_h,p_h) n along the wall (its
+// resultant converges at the rate of the energy error squared), and it needs no
+// normal. The bubbles enter through the condensed element: their own equations hold
+// exactly, so testing with φ_i e_c alone is the same as with the full mini element.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "fluid/penalised_stokes.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+// Column k: (R_{i,1}, R_{i,2}) for i = vertices[k]. Only the triangles around these
+// vertices are visited. For a solution computed with χ = 0 (no penalty); a vertex on
+// a traction boundary would also carry that traction.
+Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
+                                   const std::function<Point(const Point&)>& f,
+                                   const FluidSolution& solution, const std::vector<int>& vertices);
+
+}  // namespace fsi
