@@ -7,7 +7,7 @@
 // nothing of χ, ε or eq. (33) is used. It cannot mesh a closed gap: a structure near
 // the obstacle or the box is refused (SolverFailure).
 //
-// Remeshing: Gmsh's mesh is a discontinuous function of the outline (its vertex count
+// Remeshing: Gmsh's mesh is a discontinuous function of the outline (its triangle count
 // changes by tens from one pass to the next), which puts a noise floor under the
 // fixed point's increments (measured on the no-contact §7.2 variant at hF = 0.005:
 // increments stall between 3e-8 and 5e-7 for 80 passes, Aitken's ω at its floor).
