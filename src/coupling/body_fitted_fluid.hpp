@@ -60,7 +60,8 @@ struct BodyFittedStep {
 class BodyFittedFluid {
  public:
   // `reference`: the structure's mesh, its clamped side labelled `clamped_label` on
-  // x = 0 (Σ1); throws MeshError if its boundary off that side is not one chain.
+  // x = 0 (Σ1); throws MeshError if that side has a vertex off x = 0 or the boundary
+  // off it is not one chain (a user's structure.mesh).
   BodyFittedFluid(BodyFittedFluidParams params, const Mesh& reference, int clamped_label);
 
   // Throws SolverFailure if the gap is too small, or meshing or the solve fails.
