@@ -6,7 +6,7 @@
 # sqrt(μ_F ε) = hF/2 on every level); then per level the values, the differences
 # penalised − body-fitted and the observed order of each difference between levels.
 #   bench/bodyfit_check.sh [LEVELS] [--coupled-only|--alone-only] [--reuse]
-# LEVELS (default 5: hF = 0.02 … 0.00125, hS = 1.5 hF; ~15 min, 2.4 GB). A sixth level
+# LEVELS (default 5: hF = 0.02 … 0.00125, hS = 1.5 hF; ~8 min on 2 cores, 2.4 GB). A sixth level
 # (hF = 0.000625) costs 8 min and 10 GB for the body-fitted run alone: run it by hand
 # with `fsicontact run` (the command is in docs/validation.md).
 set -euo pipefail

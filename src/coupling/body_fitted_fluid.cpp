@@ -27,7 +27,17 @@ BodyFittedFluid::BodyFittedFluid(BodyFittedFluidParams params, const Mesh& refer
                                  int clamped_label)
     : p_(std::move(params)),
       reference_(reference),
-      outline_(structure_outline(reference, clamped_label)) {}
+      outline_(structure_outline(reference, clamped_label)) {
+  // The fluid's outer boundary runs down Σ1 (x = 0) to one end of the outline and on
+  // from the other: both ends, and the clamped side between them, must lie on it.
+  const double tolerance = 1e-9 * std::max({p_.box.L1, p_.box.H1 + p_.box.H2, 1e-300});
+  for (int v : reference.vertices_on(clamped_label))
+    if (!(std::abs(reference.vertices[v].x()) <= tolerance))
+      throw MeshError(
+          "the structure's clamped side " + reference.label_names[clamped_label] +
+          " has a vertex off x = 0 (Sigma_1), at x = " + std::to_string(reference.vertices[v].x()) +
+          "; the body-fitted fluid mesh closes the structure's outline along x = 0");
+}
 
 std::vector<Point> BodyFittedFluid::deformed_outline(const Eigen::VectorXd& u) const {
   const int nv = reference_.num_vertices();

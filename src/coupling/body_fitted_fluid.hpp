@@ -7,7 +7,7 @@
 // nothing of χ, ε or eq. (33) is used. It cannot mesh a closed gap: a structure near
 // the obstacle or the box is refused (SolverFailure).
 //
-// Remeshing: Gmsh's mesh is a discontinuous function of the outline (its vertex count
+// Remeshing: Gmsh's mesh is a discontinuous function of the outline (its triangle count
 // changes by tens from one pass to the next), which puts a noise floor under the
 // fixed point's increments (measured on the no-contact §7.2 variant at hF = 0.005:
 // increments stall between 3e-8 and 5e-7 for 80 passes, Aitken's ω at its floor).
@@ -60,7 +60,8 @@ struct BodyFittedStep {
 class BodyFittedFluid {
  public:
   // `reference`: the structure's mesh, its clamped side labelled `clamped_label` on
-  // x = 0 (Σ1); throws MeshError if its boundary off that side is not one chain.
+  // x = 0 (Σ1); throws MeshError if that side has a vertex off x = 0 or the boundary
+  // off it is not one chain (a user's structure.mesh).
   BodyFittedFluid(BodyFittedFluidParams params, const Mesh& reference, int clamped_label);
 
   // Throws SolverFailure if the gap is too small, or meshing or the solve fails.

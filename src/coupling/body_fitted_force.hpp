@@ -10,10 +10,11 @@
 //     b = −R − P(φ(X)) + P(X),   P(x)_k = −∫ p φ_k n ds along the polyline x,
 // where P(φ(X)) is the deformed-normal pressure force that −R holds and P(X) the
 // same pressure values (p∘φ, as eq. 33's p̃) on the reference outline: the viscous
-// share stays that of the deformed, body-fitted mesh. Applied with the deformed normal, the
-// hydrostatic pressure level (about −500 Pa at the §7.2 beam) becomes a follower load
-// close to the linear beam's buckling load, a load a linear structure has no
-// geometric stiffness to meet (docs/validation.md, "Body-fitted check").
+// share stays that of the deformed, body-fitted mesh. Applied with the deformed normal,
+// the pressure level (about −500 Pa at the §7.2 beam) becomes a follower load close to
+// the linear beam's buckling load, which a linear structure has no geometric stiffness
+// to meet: the relaxed fixed point diverged or landed on a spurious upward state
+// (measured before this code, issue 12's notes; docs/theory.md, "The body-fitted check").
 #pragma once
 
 #include <Eigen/Core>
@@ -27,7 +28,7 @@ enum class PressureNormal { reference, deformed };
 
 // −∫ p φ_k n ds along the polyline `points` (P1 pressure, values `p` at the points),
 // n the right-hand normal (the outward normal of a structure on the polyline's left).
-// Column k: the force at points[k]. Exact (2-point Gauss on each segment).
+// Column k: the force at points[k]. Exact: ∫ p φ_k on a segment in closed form (both linear).
 Eigen::Matrix2Xd pressure_nodal_forces(const std::vector<Point>& points, const Eigen::VectorXd& p);
 
 // The load on the structure (2nv, paper ordering) from the residual at the fluid nodes

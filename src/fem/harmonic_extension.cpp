@@ -1,8 +1,5 @@
 #include "fem/harmonic_extension.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "fem/p1.hpp"
@@ -57,20 +54,9 @@ Mesh HarmonicExtension::moved(const std::vector<Point>& boundary_d) const {
 }
 
 double min_angle_deg(const Mesh& mesh) {
-  double smallest = 180;
-  for (const auto& tri : mesh.triangles) {
-    const Point &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    const Point ab = b - a, ac = c - a;
-    if (ab.x() * ac.y() - ab.y() * ac.x() <= 0) return -1;  // inverted or flat
-    const Point p[3] = {a, b, c};
-    for (int k = 0; k < 3; ++k) {
-      const Point u = p[(k + 1) % 3] - p[k], w = p[(k + 2) % 3] - p[k];
-      smallest =
-          std::min(smallest, std::acos(std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0)) *
-                                 180 / std::numbers::pi);
-    }
-  }
-  return smallest;
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    if (!(mesh.area(t) > 0)) return -1;  // inverted or flat (Mesh::area is signed)
+  return statistics(mesh).min_angle_deg;
 }
 
 }  // namespace fsi

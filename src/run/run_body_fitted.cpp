@@ -13,6 +13,7 @@
 #include "coupling/body_fitted_coupling.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
+#include "mesh/mesh_error.hpp"
 #include "run/coupling_outputs.hpp"
 #include "run/fluid_outputs.hpp"
 #include "run/fluid_setup.hpp"
@@ -39,6 +40,19 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
     return paper_boundary_conditions(mesh, params);
   };
   return p;
+}
+
+// The fluid step; a structure mesh it cannot fit (a user's structure.mesh whose
+// Gamma_D is off x = 0 or whose other boundary is not one chain) is an input error.
+BodyFittedFluid body_fitted_fluid(const Case& c, const Mesh& structure) {
+  try {
+    return BodyFittedFluid(body_fitted_params(c), structure, structure.label("Gamma_D"));
+  } catch (const MeshError& e) {
+    throw InputError(
+        c.source + ": fluid.method = \"body-fitted\" cannot fit the fluid to this structure mesh" +
+        (c.structure.mesh.empty() ? "" : " (structure.mesh = \"" + c.structure.mesh + "\")") +
+        ": " + e.what() + "; allowed: \"penalised\"");
+  }
 }
 
 // The fluid alone around the structure at rest: one body-fitted solve, its load.
@@ -120,7 +134,7 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
     fault_point("structure");
   }
   StructureSetup& s = *s_ptr;
-  BodyFittedFluid fluid(body_fitted_params(c), s.mesh(), s.mesh().label("Gamma_D"));
+  BodyFittedFluid fluid = body_fitted_fluid(c, s.mesh());
   const bool fluid_only = c.coupling.max_iterations == 0;
   BodyFittedStep alone;
   CouplingResult result;

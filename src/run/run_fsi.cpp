@@ -30,7 +30,8 @@ namespace {
 
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
-  Json j = {{"unknowns", stokes.unknowns()},
+  Json j = {{"method", "penalised"},  // fluid.method (run_body_fitted.cpp writes the other)
+            {"unknowns", stokes.unknowns()},
             {"nonzeros", stokes.nonzeros()},
             {"solver", stokes.solver_name()},
             {"analyses", t.analyses},  // symbolic analyses: 1 per run, 0 for a sweep row reusing it

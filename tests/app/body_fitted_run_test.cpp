@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/msh.hpp"
 
 namespace fsi {
 namespace {
@@ -97,6 +98,65 @@ TEST(BodyFittedRun, RefusesContact) {
   EXPECT_NE(j["failure"].get<std::string>().find("contact cannot be body-fitted"),
             std::string::npos)
       << j["failure"];
+}
+
+}  // namespace
+}  // namespace fsi
+
+namespace fsi {
+namespace {
+
+TEST(BodyFittedRun, ConvergeRunsItsLevelsAndReportsTheLoad) {
+  // Three coarse levels (hF = 0.04, 0.02, 0.01): no fixed fluid mesh is made for the
+  // levels' checks, every level remeshes its own; structure_load is a quantity.
+  const fs::path dir = testing::scratch_dir("body-fitted-converge");
+  const testing::CliRun r = testing::run_cli(
+      "converge " + kCase +
+          " --levels 3 --set fluid.h=0.04 --set structure.h=0.06 --set fluid.method=body-fitted "
+          "--set output.png=false --set output.vtu=false --out study",
+      dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "study/summary.json"));
+  ASSERT_TRUE(j["quantities"].contains("structure_load_y"));
+  const auto& values = j["quantities"]["structure_load_y"]["values"];
+  ASSERT_EQ(values.size(), 3u);
+  // The vertical load rises towards ~4.7 N/m with refinement (docs/validation.md).
+  EXPECT_LT(values[0].get<double>(), values[2].get<double>());
+  for (int i = 1; i <= 3; ++i) {
+    const auto level = nlohmann::json::parse(testing::slurp(dir / ("study/level-" + std::to_string(i) + "/summary.json")));
+    EXPECT_EQ(level["fluid"]["method"], "body-fitted") << i;
+  }
+}
+
+}  // namespace
+}  // namespace fsi
+
+namespace fsi {
+namespace {
+
+TEST(BodyFittedRun, RefusesAStructureMeshClampedOffTheWall) {
+  // A user's beam clamped at x = L instead of x = 0: the penalised method takes it,
+  // the body-fitted mesh cannot close the outline along Sigma_1 (exit 2, both keys).
+  testing::HandMesh m;
+  m.nodes = {{0, 0}, {0.16, 0}, {0.2, 0}, {0.24, 0}, {0.3, 0}, {0.3, 0.03}, {0.24, 0.03}, {0.2, 0.03}, {0.16, 0.03}, {0, 0.03}};
+  const int top[6] = {0, 10, 9, 8, 7, 6};  // the top node above bottom node k
+  for (int k = 1; k < 5; ++k) {
+    m.triangles.push_back({k, k + 1, top[k + 1]});
+    m.triangles.push_back({k, top[k + 1], top[k]});
+  }
+  m.lines = {{"Gamma_D", {{5, 6}}}, {"Gamma_C", {{2, 3}, {3, 4}}},
+             {"Gamma_N", {{1, 2}, {4, 5}, {6, 7}, {7, 8}, {8, 9}, {9, 10}, {10, 1}}}};
+  const fs::path dir = testing::scratch_dir("body-fitted-user-mesh");
+  {
+    std::ofstream(dir / "beam.msh") << testing::msh22(m);
+  }
+  const std::string args = "run " + kCase + kCoarse + " --set structure.mesh=\"" + (dir / "beam.msh").string() + "\" --out res";
+  const testing::CliRun r = testing::run_cli(args, dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("fluid.method"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("structure.mesh"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("off x = 0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "res"));
 }
 
 }  // namespace
