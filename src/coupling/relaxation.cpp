@@ -88,7 +88,13 @@ class IqnIlsRelaxation final : public Relaxation {
       return u + options_.omega0 * r;  // first step: constant relaxation
     }
     omega_ = std::numeric_limits<double>::quiet_NaN();
-    Eigen::VectorXd z = H_u + W_matrix() * least_squares(r);
+    // The coefficients first: least_squares drops the filtered columns from V and W,
+    // and W must then be formed from what is left (as one expression, W_matrix() was
+    // evaluated first, a column too wide for α: found by fuzz_cli).
+    const Eigen::VectorXd alpha = least_squares(r);
+    const Eigen::MatrixXd W = W_matrix();
+    if (W.cols() != alpha.size()) throw std::logic_error("iqn-ils: W and the coefficients disagree in size");
+    Eigen::VectorXd z = H_u + W * alpha;
     if (project) {
       const Eigen::VectorXd feasible = project(z);
       if ((feasible - z).norm() > 0) ++projections_;

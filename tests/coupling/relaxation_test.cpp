@@ -87,6 +87,25 @@ TEST(Relaxation, IqnIlsConvergesInAtMostNPlusOneEvaluations) {
   EXPECT_LT((u - exact).norm(), 1e-7 * exact.norm());
 }
 
+// More passes than unknowns: from the (n + 2)-th on, the oldest column of V depends on
+// the newer ones and the QR filter drops it. The update must use the history as
+// filtered (W and the coefficients of the same columns): with W taken before the
+// filter, W (n × k) met k − 1 coefficients (an Eigen assertion in the fuzzing build,
+// a read past the coefficients without it; found by fuzz_cli on a converge study).
+TEST(Relaxation, IqnIlsKeepsWorkingWhenTheFilterDropsAColumn) {
+  const int n = 3;
+  std::mt19937 gen(7);
+  std::normal_distribution<double> N(0, 1);
+  const Eigen::MatrixXd A = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return 0.3 * N(gen); });
+  const Eigen::VectorXd b = Eigen::VectorXd::NullaryExpr(n, [&] { return N(gen); });
+  const Eigen::VectorXd exact = (Eigen::MatrixXd::Identity(n, n) - A).lu().solve(b);
+  auto relax = make_relaxation("iqn-ils", {.omega0 = 0.5, .max_columns = 20, .filter = 1e-8}, identity(n));
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < 12; ++k) u = relax->next(u, A * u + b);  // past convergence: columns degenerate
+  ASSERT_TRUE(u.allFinite());
+  EXPECT_LT((u - exact).norm(), 1e-6 * exact.norm());
+}
+
 TEST(Relaxation, IqnIlsProjectsAnInfeasibleUpdateAndCountsIt) {
   const int n = 3;
   const Eigen::MatrixXd A = -0.5 * Eigen::MatrixXd::Identity(n, n);
