@@ -132,8 +132,10 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     }
     {
       const Stopwatch clock;  // step 4: the contact QP, warm-started
-      ContactSolution next =
-          guarded("the contact QP", k, [&] { return p_.structure.solve(b_S, warm); });
+      ContactSolution next = guarded("the contact QP", k, [&] {
+        if (relinearise) relinearise(u);
+        return p_.structure.solve(b_S, warm);
+      });
       if (!next.u.allFinite()) fail("the contact QP", "non-finite displacement");
       result.structure = std::move(next);  // only a good state replaces the last one
       result.fluid_load = b_S - p_.b_applied;

@@ -78,6 +78,10 @@ class FixedPointCoupling {
   // (PenalisedStokes::complete()): the outputs that draw or write the whole fluid
   // need it; a run without them can leave it exact near the structure only.
   bool complete_at_end = true;
+  // Called with u^k before each pass's QP: contact.gap = "normal" re-linearises the
+  // constraint about the current state there, once per pass (SPEC §9). Empty: the
+  // constraint stays as built (the paper's eq. 15).
+  std::function<void(const Eigen::VectorXd& u)> relinearise;
   // u⁰ instead of the structure at rest (2nv, feasible: another run's ũ, say). A
   // restart from another scheme's end state tells whether that state is a fixed
   // point for this scheme too (study/converge.cpp).

@@ -336,6 +336,8 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
   {
     Section s(section_table(root, "contact", origin), "contact", origin, known);
     c.contact.solver = s.choice("solver", c.contact.solver, {"active-set", "ipopt"});
+    c.contact.gap = s.choice("gap", c.contact.gap, {"paper", "normal"});
+    c.contact.boundary = s.choice("boundary", c.contact.boundary, {"Gamma_C", "all"});
     s.reject_unknown();
   }
   read_output(root, origin, c, known);
@@ -431,7 +433,7 @@ std::string to_toml(const Case& c) {
   t.insert("coupling", toml::table{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol},
                                    {"max_iterations", k.max_iterations}, {"scheme", k.scheme},
                                    {"eps_rule", k.eps_rule}});
-  t.insert("contact", toml::table{{"solver", c.contact.solver}});
+  t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
   t.insert("output", toml::table{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}});
   std::ostringstream out;
   out << t << "\n";

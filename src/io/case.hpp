@@ -71,6 +71,10 @@ struct CouplingParams {
 
 struct ContactParams {
   std::string solver = "active-set";  // "active-set" | "ipopt"
+  // SPEC §9: "paper" (eq. 15, ψ linearised at the reference configuration) | "normal"
+  // (the signed distance, re-linearised about the current state).
+  std::string gap = "paper";
+  std::string boundary = "Gamma_C";  // the candidate edges: "Gamma_C" | "all" (every edge off Γ_D)
 };
 
 struct OutputParams {

@@ -166,6 +166,17 @@ void check_fluid_method(const Case& c, const Origin& o) {
          "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
 }
 
+// The paper's gap is the graph of the disk's upper arc over Γ_C: it has no meaning on
+// the rest of the boundary. The body-fitted fluid cannot follow contact at all.
+void check_contact_gap(const Case& c, const Origin& o) {
+  if (c.contact.gap == "paper" && c.contact.boundary != "Gamma_C")
+    fail(o, "contact.boundary", "= \"" + c.contact.boundary + "\" needs contact.gap = \"normal\" (eq. 15's graph covers Gamma_C only)",
+         "\"Gamma_C\" with contact.gap = \"paper\"");
+  if (c.contact.gap == "normal" && c.fluid && c.fluid->method == "body-fitted")
+    fail(o, "contact.gap", "= \"normal\" has no contact to follow with fluid.method = \"body-fitted\" (it refuses contact)",
+         "\"paper\" with fluid.method = \"body-fitted\"");
+}
+
 }  // namespace
 
 void check_case(const Case& c, const Origin& origin) {
@@ -177,6 +188,7 @@ void check_case(const Case& c, const Origin& origin) {
     check_rectangle_against_obstacle(c, origin);
   }
   check_strain(c, origin);
+  check_contact_gap(c, origin);
   if (!c.fluid) return;
   check_structure_in_box(c, origin);
   check_fluid_method(c, origin);

@@ -21,12 +21,19 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
   require_finite(A, "active-set", "the operator A_S");
   require_finite(C, "active-set", "the constraint matrix C_S");
   A_ = A;
-  C_ = C;
   cholesky_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
   cholesky_->compute(A_);
   if (cholesky_->info() != Eigen::Success)
     throw QpError("active-set: Cholesky factorisation of A_S failed (not positive definite: "
                   "is the structure clamped?)");
+  set_constraints(C);
+}
+
+void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
+  if (!cholesky_) throw QpError("active-set: set_constraints before set_operator");
+  if (C.cols() != A_.rows()) throw QpError("active-set: constraint and operator sizes do not match");
+  require_finite(C, "active-set", "the constraint matrix C_S");
+  C_ = C;
   // S = C A⁻¹ Cᵀ by blocks of columns, so A⁻¹Cᵀ is never stored whole.
   const Eigen::Index m = C_.rows();
   S_.resize(m, m);

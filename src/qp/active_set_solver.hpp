@@ -24,6 +24,7 @@ namespace fsi {
 class ActiveSetSolver final : public QpSolver {
  public:
   void set_operator(const SparseMatrix& A, const SparseMatrix& C) override;
+  void set_constraints(const SparseMatrix& C) override;
   QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
                  const QpResult* warm = nullptr) override;
   std::string name() const override { return "active-set"; }

@@ -214,6 +214,12 @@ void IpoptSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C) {
   C_ = C;
 }
 
+void IpoptSolver::set_constraints(const SparseMatrix& C) {
+  if (C.cols() != A_.rows()) throw QpError("ipopt: constraint and operator sizes do not match");
+  require_finite(C, "ipopt", "the constraint matrix C_S");
+  C_ = C;
+}
+
 namespace {
 
 // Runs IPOPT on `nlp`; its own exceptions (and running out of memory) become QpError.

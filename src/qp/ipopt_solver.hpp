@@ -13,6 +13,7 @@ namespace fsi {
 class IpoptSolver final : public QpSolver {
  public:
   void set_operator(const SparseMatrix& A, const SparseMatrix& C) override;
+  void set_constraints(const SparseMatrix& C) override;
   QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
                  const QpResult* warm = nullptr) override;
   std::string name() const override { return "ipopt"; }

@@ -68,6 +68,9 @@ class QpSolver {
   // Sets the operator A (n×n) and the constraint matrix C (m×n); done once, reused
   // by every later solve (the structure's A_S and C_S do not change in the coupling).
   virtual void set_operator(const SparseMatrix& A, const SparseMatrix& C) = 0;
+  // A new constraint matrix C for the same A (contact.gap = "normal" re-linearises
+  // C about each new state): A's factorisation is kept.
+  virtual void set_constraints(const SparseMatrix& C) = 0;
   // Solves with load b and bounds c. `warm`, if given, is an earlier result used as
   // a starting point. Throws QpError if no minimiser is found.
   virtual QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,

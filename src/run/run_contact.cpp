@@ -1,11 +1,13 @@
 // The contact-only problem (SPEC §2): one QP.
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/fault.hpp"
 #include "io/atomic_file.hpp"
+#include "run/contact_gap.hpp"
 #include "run/output_dir.hpp"
 #include "run/probes.hpp"
 #include "run/run_case.hpp"
@@ -50,13 +52,15 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
 
   StructureSetup s;
   ContactSolution solution;
+  std::unique_ptr<ContactGap> gap;
   {
     ScopedPhase phase(times, "structure");
     s = make_structure(c, std::move(mesh), progress);
     fault_point("structure");
     try {
       fault_point("contact");
-      solution = s.solver->solve(s.b_applied);
+      gap = std::make_unique<ContactGap>(c, s);
+      solution = gap->solve(s, s.b_applied);
     } catch (const QpError& e) {
       throw SolverFailure(std::string("structure: contact QP failed: ") + e.what());
     }
@@ -81,6 +85,9 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   j["min_displacement_y"] = u2.minCoeff();
   j["tip_displacement"] = point_json(displacement_at(s.mesh(), solution.u, tip_of(c)));
   j["contact"] = to_json(contact);
+  j["contact"]["gap"] = c.contact.gap;
+  j["contact"]["min_gap"] = gap->min_gap(s.mesh(), solution.u);
+  j["contact"]["linearisations"] = gap->linearisations();
   j["kkt"] = to_json(solution.qp.kkt);
   r.report = contact_report(c, stats, s, solution, contact, max_u, u2.minCoeff());
 

@@ -16,6 +16,7 @@
 #include "io/vtu.hpp"
 #include "run/coupling_outputs.hpp"
 #include "run/fluid_outputs.hpp"
+#include "run/contact_gap.hpp"
 #include "run/fluid_band.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/output_dir.hpp"
@@ -106,6 +107,13 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   loop.progress = progress;
   loop.complete_at_end = c.output.png || c.output.vtu;
   if (initial) loop.initial = *initial;
+  const ContactGap gap(c, s);
+  if (gap.normal()) {
+    // From the linearisation at rest, whatever a cached setup's last run left (a sweep's
+    // row must give the numbers of a run of its own).
+    gap.relinearise(*s.solver, Eigen::VectorXd::Zero(2 * ref.num_vertices()));
+    loop.relinearise = [&gap, &s](const Eigen::VectorXd& u) { gap.relinearise(*s.solver, u); };
+  }
   CouplingResult result = loop.run();
   for (const auto& r : result.history) {
     times.add("fluid", r.t_fluid);
@@ -270,6 +278,8 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
     j["contact"] = to_json(cs);
+    j["contact"]["gap"] = c.contact.gap;
+    j["contact"]["min_gap"] = ContactGap(c, s).min_gap(s.mesh(), u);
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
   }

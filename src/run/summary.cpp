@@ -33,7 +33,7 @@ Json to_json(const CouplingParams& k) {
           {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};
 }
 
-Json to_json(const ContactParams& c) { return {{"solver", c.solver}}; }
+Json to_json(const ContactParams& c) { return {{"solver", c.solver}, {"gap", c.gap}, {"boundary", c.boundary}}; }
 
 Json to_json(const OutputParams& o) { return {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}}; }
 

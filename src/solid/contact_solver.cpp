@@ -66,10 +66,18 @@ ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
   require_no_rigid_motion(mesh_, fixed_dofs);
   for (int d = 0; d < n; ++d)
     if (!fixed[d]) free_dofs_.push_back(d);
-  const SparseMatrix P = selection(n, free_dofs_);
-  A_free_ = P.transpose() * A_S_ * P;
-  C_free_ = contact_.C_S * P;
+  P_ = selection(n, free_dofs_);
+  A_free_ = P_.transpose() * A_S_ * P_;
+  C_free_ = contact_.C_S * P_;
   solver_.set_operator(A_free_, C_free_);
+}
+
+void ElasticContactSolver::set_constraint(ContactConstraint contact) {
+  if (contact.C_S.cols() != A_S_.rows() || contact.c_lb.size() != contact.C_S.rows())
+    throw std::invalid_argument("ElasticContactSolver::set_constraint: sizes do not fit the mesh");
+  contact_ = std::move(contact);
+  C_free_ = contact_.C_S * P_;
+  solver_.set_constraints(C_free_);
 }
 
 ContactSolution ElasticContactSolver::solve(const Eigen::VectorXd& b_S,

@@ -31,6 +31,10 @@ class ElasticContactSolver {
   // before any QP has been solved, complete so that outputs can be written from it.
   ContactSolution at_rest() const;
 
+  // Replaces the contact constraint (contact.gap = "normal": C_S, c_lb re-linearised
+  // about a new state); A_S and its factorisation are kept.
+  void set_constraint(ContactConstraint contact);
+
   // The feasible displacement nearest to z in the A_S-norm: z itself if C_S z ≥ c_lb,
   // otherwise the QP with load A_S z (min ½(ξ−z)ᵀA_S(ξ−z) s.t. C_S ξ ≥ c_lb).
   Eigen::VectorXd project(const Eigen::VectorXd& z);
@@ -47,6 +51,7 @@ class ElasticContactSolver {
   SparseMatrix A_S_;
   ContactConstraint contact_;
   std::vector<int> free_dofs_;
+  SparseMatrix P_;  // free dofs → all dofs
   SparseMatrix A_free_, C_free_;
   QpSolver& solver_;
 };

@@ -65,6 +65,7 @@ class ThrowingQp final : public QpSolver {
   void set_operator(const SparseMatrix& A, const SparseMatrix& C) override {
     inner_.set_operator(A, C);
   }
+  void set_constraints(const SparseMatrix& C) override { inner_.set_constraints(C); }
   QpResult solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
                  const QpResult* warm) override {
     if (++calls_ == at_) thrower_();

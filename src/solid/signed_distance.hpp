@@ -1,0 +1,41 @@
+// Rigid obstacles as signed distances (SPEC §9, contact.gap = "normal"): d(x) > 0
+// outside the obstacle, the outward unit normal n(x) = ∇d(x) at the nearest point.
+#pragma once
+
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+struct SignedDistance {
+  double d = 0;
+  Point n = Point::Zero();
+};
+
+class Obstacle {
+ public:
+  virtual ~Obstacle() = default;
+  virtual SignedDistance at(const Point& x) const = 0;
+};
+
+// The closed disk B(c, r): d = |x − c| − r, n = (x − c)/|x − c| (at the centre, where
+// n is not defined, n = (0, 1): the point is deep inside, any direction will do).
+class DiskObstacle final : public Obstacle {
+ public:
+  DiskObstacle(Point centre, double r) : c_(std::move(centre)), r_(r) {}
+  SignedDistance at(const Point& x) const override;
+
+ private:
+  Point c_;
+  double r_;
+};
+
+// The nearest of several obstacles (the smallest d) and which one it is.
+struct NearestObstacle {
+  SignedDistance gap;
+  int index = -1;
+};
+NearestObstacle nearest(const std::vector<const Obstacle*>& obstacles, const Point& x);
+
+}  // namespace fsi
