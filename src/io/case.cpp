@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "io/case_reader.hpp"
+#include "io/case_section.hpp"
 #include "io/output_path.hpp"
 
 namespace fsi {
@@ -39,126 +40,6 @@ void check_case(const Case& c, const Origin& origin);  // case_checks.cpp
 namespace {
 
 using namespace case_detail;
-
-// A TOML number as a double. toml++'s value<double>() refuses integers that a double
-// cannot hold exactly (found by fuzzing: L = 30000000020000000 threw
-// bad_optional_access); the nearest double is what a user means.
-double as_double(const toml::node& n) {
-  if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
-  return n.as_floating_point()->get();
-}
-
-// Reads one section, remembering which keys it consumed so the rest can be rejected
-// (and, for case_keys(), which keys exist).
-class Section {
- public:
-  Section(const toml::table* table, std::string name, const Origin& origin, std::vector<std::string>* known)
-      : table_(table), name_(std::move(name)), origin_(origin), known_(known) {}
-
-  double number(const std::string& key, double value, const Range& range = kAny) {
-    const toml::node* n = find(key);
-    if (!n) return value;
-    if (!n->is_number()) fail(origin_, full(key), "must be a number", range.text());
-    const double v = as_double(*n);
-    if (!std::isfinite(v)) fail(origin_, full(key), "must be finite", range.text());
-    if (!range.contains(v)) fail(origin_, full(key), "= " + shortest(v) + " is out of range", range.text());
-    return v;
-  }
-  int integer(const std::string& key, int value, int lo, int hi) {
-    const toml::node* n = find(key);
-    if (!n) return value;
-    const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (!n->is_integer()) fail(origin_, full(key), "must be an integer", allowed);
-    const int64_t v = n->as_integer()->get();
-    if (v < lo || v > hi) fail(origin_, full(key), "= " + std::to_string(v) + " is out of range", allowed);
-    return static_cast<int>(v);
-  }
-  std::string text(const std::string& key, std::string value) {
-    const toml::node* n = find(key);
-    if (!n) return value;
-    if (!n->is_string()) fail(origin_, full(key), "must be a string", "a quoted string");
-    return n->as_string()->get();
-  }
-  std::string choice(const std::string& key, std::string value, const std::vector<std::string>& allowed) {
-    const std::string v = text(key, std::move(value));
-    std::string list;
-    for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
-    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-      fail(origin_, full(key), "= \"" + v + "\" is not a known choice", list);
-    return v;
-  }
-  bool boolean(const std::string& key, bool value) {
-    const toml::node* n = find(key);
-    if (!n) return value;
-    if (!n->is_boolean()) fail(origin_, full(key), "must be true or false", "true, false");
-    return n->as_boolean()->get();
-  }
-  // Two numbers, each in `range`.
-  Point vector2(const std::string& key, Point value, const Range& range = kSigned) {
-    const toml::node* n = find(key);
-    if (!n) return value;
-    const std::string allowed = "[x, y], each " + range.text();
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
-      fail(origin_, full(key), "must be an array of two numbers", allowed);
-    const Point v(as_double((*a)[0]), as_double((*a)[1]));
-    if (!v.allFinite()) fail(origin_, full(key), "must be finite", allowed);
-    if (!range.contains(v.x()) || !range.contains(v.y()))
-      fail(origin_, full(key), "= [" + shortest(v.x()) + ", " + shortest(v.y()) + "] is out of range", allowed);
-    return v;
-  }
-  // A width (a number, m) or a box [x_min, y_min, x_max, y_max].
-  void band(const std::string& key, double& width, std::optional<std::array<double, 4>>& box) {
-    const toml::node* n = find(key);
-    if (!n) return;
-    const std::string allowed = "a width in [1e-30, 1e30] m, or a box [x_min, y_min, x_max, y_max] with x_min < x_max, y_min < y_max";
-    if (n->is_number()) {
-      width = number(key, width, kSize);
-      return;
-    }
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 4) fail(origin_, full(key), "must be a number or an array of four numbers", allowed);
-    std::array<double, 4> b{};
-    for (std::size_t i = 0; i < 4; ++i) {
-      if (!(*a)[i].is_number()) fail(origin_, full(key), "must be a number or an array of four numbers", allowed);
-      b[i] = as_double((*a)[i]);
-      if (!kSigned.contains(b[i])) fail(origin_, full(key), "has " + shortest(b[i]) + ", out of range", allowed);
-    }
-    if (!(b[0] < b[2] && b[1] < b[3])) fail(origin_, full(key), "is an empty box", allowed);
-    box = b;
-  }
-  void reject_unknown() const {
-    if (!table_) return;
-    for (auto&& [k, v] : *table_) {
-      const std::string key(k.str());
-      if (!read_.count(key)) {
-        std::string known;
-        for (const auto& r : read_) known += (known.empty() ? "" : ", ") + r;
-        fail(origin_, full(key), "is not a known key", known);
-      }
-    }
-  }
-
- private:
-  const toml::node* find(const std::string& key) {
-    if (read_.insert(key).second && known_) known_->push_back(full(key));
-    return table_ ? table_->get(key) : nullptr;
-  }
-  std::string full(const std::string& key) const { return name_.empty() ? key : name_ + "." + key; }
-
-  const toml::table* table_;
-  std::string name_;
-  const Origin& origin_;
-  std::vector<std::string>* known_;
-  std::set<std::string> read_;
-};
-
-const toml::table* section_table(const toml::table& root, const std::string& name, const Origin& origin) {
-  const toml::node* n = root.get(name);
-  if (!n) return nullptr;
-  if (!n->is_table()) fail(origin, name, "must be a table ([" + name + "])", "");
-  return n->as_table();
-}
 
 }  // namespace
 
@@ -225,7 +106,7 @@ void check_name(const std::string& name, const Origin& origin) {
          allowed);
 }
 
-const std::set<std::string> kSections = {"structure", "obstacle", "fluid", "coupling", "contact", "output", "name"};
+const std::set<std::string> kSections = {"structure", "obstacle", "obstacles", "fluid", "coupling", "contact", "output", "name"};
 
 // ν → 0.5 makes λ/μ = 2ν/(1 − 2ν) grow without bound and A_S singular in double
 // precision: measured, the Cholesky factorisation failed at ν = 0.49999999999999
@@ -322,11 +203,13 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     for (auto&& [k, v] : root)
       if (!kSections.count(std::string(k.str())))
         fail(origin, std::string(k.str()), "is not a known key or section",
-             "name, [structure], [obstacle], [fluid], [coupling], [contact], [output]");
+             "name, [structure], [obstacle], [[obstacles]], [fluid], [coupling], [contact], [output]");
     check_name(c.name, origin);
   }
   read_structure(root, origin, case_path, c, known);
+  c.obstacle_given = root.contains("obstacle");
   read_obstacle(root, origin, c, known);
+  read_obstacles(root, origin, c);
   const toml::table* fluid = section_table(root, "fluid", origin);
   if (fluid || has_fluid_default || known)
     read_fluid(fluid, origin, case_path, c, known);
@@ -418,7 +301,19 @@ std::string to_toml(const Case& c) {
   if (!s.mesh.empty()) st.insert("mesh", s.mesh);
   t.insert("structure", st);
   const auto& o = c.obstacle;
-  t.insert("obstacle", toml::table{{"x0", o.x0}, {"y0", o.y0}, {"r", o.r}, {"gamma", o.gamma}});
+  if (!c.obstacles_given) {
+    t.insert("obstacle", toml::table{{"x0", o.x0}, {"y0", o.y0}, {"r", o.r}, {"gamma", o.gamma}});
+  } else {
+    toml::array list;
+    for (const ObstacleSpec& b : c.obstacles) {
+      toml::table e{{"shape", b.shape}};
+      if (b.shape == "disk") e.insert("x0", b.x0), e.insert("y0", b.y0), e.insert("r", b.r);
+      if (b.shape == "half-plane")
+        e.insert("point", toml::array{b.point.x(), b.point.y()}), e.insert("normal", toml::array{b.normal.x(), b.normal.y()});
+      list.push_back(e);
+    }
+    t.insert("obstacles", list);
+  }
   if (c.fluid) {
     const auto& f = *c.fluid;
     toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},

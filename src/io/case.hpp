@@ -27,6 +27,14 @@ struct ObstacleParams {
   double xc_max() const { return x0 + gamma * r; }
 };
 
+// One rigid obstacle of [[obstacles]] (SPEC §9).
+struct ObstacleSpec {
+  std::string shape;                       // "disk" | "half-plane" (polygons: not yet)
+  double x0 = 0, y0 = 0, r = 0;            // disk
+  Point point = Point::Zero();             // half-plane: a point on its boundary
+  Point normal = Point::Zero();            // and its outward normal (unit)
+};
+
 struct FluidParams {
   double L1 = 0.41, H1 = 0.5, H2 = 0.5;
   double mu = 0.0035;
@@ -89,6 +97,9 @@ struct Case {
   std::string source = "(built-in paper-7.2 case)";  // where it came from, for messages
   StructureParams structure;
   ObstacleParams obstacle;
+  bool obstacle_given = false;          // the file or --set has an [obstacle] table
+  std::vector<ObstacleSpec> obstacles;  // [[obstacles]]
+  bool obstacles_given = false;         // [[obstacles]] present (possibly empty: no obstacle)
   std::optional<FluidParams> fluid = FluidParams{};
   CouplingParams coupling;
   ContactParams contact;

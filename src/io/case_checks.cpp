@@ -177,15 +177,37 @@ void check_contact_gap(const Case& c, const Origin& o) {
          "\"paper\" with fluid.method = \"body-fitted\"");
 }
 
+// [[obstacles]] (SPEC §9): the signed-distance gap only (eq. 15 is the graph of one
+// disk); contact problems only for now (in a coupled run every obstacle would be a hole
+// of D, which the fluid meshes do not have yet); a generated rectangle's Γ_C is the
+// paper disk's span, so there every edge off Γ_D is the candidate.
+void check_obstacles(const Case& c, const Origin& o) {
+  if (!c.obstacles_given) return;
+  if (c.obstacle_given)
+    fail(o, "obstacles", "and [obstacle] are both given", "[obstacle] (the paper's disk) or [[obstacles]], not both");
+  if (c.contact.gap != "normal")
+    fail(o, "contact.gap", "= \"" + c.contact.gap + "\" cannot use [[obstacles]] (eq. 15 is the graph of one disk)",
+         "\"normal\" with [[obstacles]]");
+  if (c.fluid)
+    fail(o, "obstacles", "are for the contact problem in this version (no [fluid]): the fluid box has the paper's one disk",
+         "[obstacle] with a [fluid] section");
+  if (c.structure.mesh.empty() && c.contact.boundary != "all")
+    fail(o, "contact.boundary", "= \"" + c.contact.boundary + "\": the generated rectangle's Gamma_C follows [obstacle]'s disk",
+         "\"all\" with [[obstacles]] and a generated structure");
+}
+
 }  // namespace
 
 void check_case(const Case& c, const Origin& origin) {
   // With a mesh file the structure's geometry is the mesh's, checked when it is read
   // (run/structure_setup.cpp): L and H must then equal its extent.
+  check_obstacles(c, origin);
   if (c.structure.mesh.empty()) {
     check_structure_mesh_size(c, origin);
-    check_contact_zone(c, origin);
-    check_rectangle_against_obstacle(c, origin);
+    if (!c.obstacles_given) {  // Γ_C and the disk of [obstacle]
+      check_contact_zone(c, origin);
+      check_rectangle_against_obstacle(c, origin);
+    }
   }
   check_strain(c, origin);
   check_contact_gap(c, origin);

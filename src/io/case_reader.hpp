@@ -5,9 +5,14 @@
 #include <limits>
 #include <set>
 #include <string>
+#include <toml++/toml.h>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+
+namespace fsi {
+struct Case;
+}
 
 namespace fsi::case_detail {
 
@@ -51,5 +56,8 @@ struct Origin {
 // Throws InputError "<origin of key>: <key> <problem>; allowed: <allowed>".
 [[noreturn]] void fail(const Origin& origin, const std::string& key, const std::string& problem,
                        const std::string& allowed);
+
+// [[obstacles]] into c.obstacles (case_obstacles.cpp).
+void read_obstacles(const toml::table& root, const Origin& origin, fsi::Case& c);
 
 }  // namespace fsi::case_detail

@@ -1,24 +1,42 @@
 #include "run/contact_gap.hpp"
 
-namespace fsi {
+#include <algorithm>
 
-ContactGap::ContactGap(const Case& c, const StructureSetup& s) : normal_(c.contact.gap == "normal") {
-  const ObstacleParams& o = c.obstacle;
-  owned_.push_back(std::make_unique<DiskObstacle>(Point(o.x0, o.y0), o.r));
+namespace fsi {
+namespace {
+
+std::unique_ptr<Obstacle> make_obstacle(const ObstacleSpec& o) {
+  if (o.shape == "disk") return std::make_unique<DiskObstacle>(Point(o.x0, o.y0), o.r);
+  return std::make_unique<HalfPlaneObstacle>(o.point, o.normal);
+}
+
+}  // namespace
+
+ContactGap::ContactGap(const Case& c, const Mesh& mesh) : normal_(c.contact.gap == "normal") {
+  if (c.obstacles_given) {
+    for (const ObstacleSpec& o : c.obstacles) owned_.push_back(make_obstacle(o));
+  } else {
+    owned_.push_back(std::make_unique<DiskObstacle>(Point(c.obstacle.x0, c.obstacle.y0), c.obstacle.r));
+  }
   for (const auto& p : owned_) obstacles_.push_back(p.get());
-  const Mesh& mesh = s.mesh();
-  // "paper" checks the exact gap on its own rows (Γ_C's interior vertices).
+  // "paper" checks the exact gap on its own rows (Γ_C's interior vertices); with no
+  // obstacle (obstacles = []) there is nothing to touch and no row.
+  if (obstacles_.empty()) return;
   candidates_ = candidate_vertices(mesh, normal_ ? c.contact.boundary : "Gamma_C", mesh.label("Gamma_C"),
                                    mesh.label("Gamma_D"));
 }
 
-ContactSolution ContactGap::solve(StructureSetup& s, const Eigen::VectorXd& b_S, const Eigen::VectorXd& u_start,
-                                  const ContactSolution* warm) {
+ContactConstraint ContactGap::at_rest(const Mesh& mesh) const {
+  return assemble_normal_contact(mesh, candidates_, obstacles_, Eigen::VectorXd::Zero(2 * mesh.num_vertices()));
+}
+
+ContactSolution ContactGap::solve(ElasticContactSolver& solver, const Eigen::VectorXd& b_S,
+                                  const Eigen::VectorXd& u_start, const ContactSolution* warm) {
   if (!normal_) {
     linearisations_ = 1;
-    return s.solver->solve(b_S, warm);
+    return solver.solve(b_S, warm);
   }
-  RelinearisedContact r = solve_relinearised(*s.solver, candidates_, obstacles_, b_S, u_start);
+  RelinearisedContact r = solve_relinearised(solver, candidates_, obstacles_, b_S, u_start);
   linearisations_ = r.linearisations;
   return std::move(r.solution);
 }
@@ -27,8 +45,38 @@ void ContactGap::relinearise(ElasticContactSolver& solver, const Eigen::VectorXd
   solver.set_constraint(assemble_normal_contact(solver.mesh(), candidates_, obstacles_, u));
 }
 
-double ContactGap::min_gap(const Mesh& mesh, const Eigen::VectorXd& u) const {
-  return min_exact_gap(mesh, candidates_, obstacles_, u);
+double ContactGap::min_gap(const Mesh& mesh, const Eigen::VectorXd& u, bool all_vertices) const {
+  if (obstacles_.empty()) return INFINITY;
+  if (!all_vertices) return min_exact_gap(mesh, candidates_, obstacles_, u);
+  CandidateSet every;
+  for (int v = 0; v < mesh.num_vertices(); ++v) every.vertices.push_back(v), every.weights.push_back(1);
+  return min_exact_gap(mesh, every, obstacles_, u);
+}
+
+std::vector<ContactGap::PerObstacle> ContactGap::per_obstacle(const ElasticContactSolver& solver,
+                                                              const ContactSolution& s) const {
+  std::vector<PerObstacle> out(obstacles_.size());
+  if (!normal_) return out;
+  const Mesh& mesh = solver.mesh();
+  const int nv = mesh.num_vertices();
+  const auto& rows = solver.contact().row_vertex;
+  for (std::size_t i = 0; i < rows.size() && i < s.qp.active.size(); ++i) {
+    const int v = rows[i];
+    const Point x = mesh.vertices[v] + Point(s.u[v], s.u[nv + v]);
+    const NearestObstacle n = nearest(obstacles_, x);
+    if (n.index < 0) continue;
+    PerObstacle& o = out[static_cast<std::size_t>(n.index)];
+    // Row i is w_i n·u ≥ ...: its reaction on the structure is α_i w_i n (the row's coefficients).
+    const double fx = solver.contact().C_S.coeff(static_cast<Eigen::Index>(i), v),
+                 fy = solver.contact().C_S.coeff(static_cast<Eigen::Index>(i), nv + v);
+    o.force += s.qp.alpha[static_cast<Eigen::Index>(i)] * Point(fx, fy);
+    if (!s.qp.active[i]) continue;
+    const double X = mesh.vertices[v].x();
+    o.x_min = o.active_nodes ? std::min(o.x_min, X) : X;
+    o.x_max = o.active_nodes ? std::max(o.x_max, X) : X;
+    ++o.active_nodes;
+  }
+  return out;
 }
 
 }  // namespace fsi

@@ -1,14 +1,14 @@
 // contact.gap for a run (SPEC §9): the paper's eq. (15), or the signed distance
 // re-linearised about the current state (solid/relinearised_contact.hpp), with the
-// obstacles and the candidate vertices the case asks for; and the exact gap that
-// summary.json reports for either rule (contact.min_gap).
+// obstacles ([obstacle]'s disk, or [[obstacles]]) and the candidate vertices the case
+// asks for; and the exact gap that summary.json reports for either rule.
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "io/case.hpp"
-#include "run/structure_setup.hpp"
+#include "solid/contact_solver.hpp"
 #include "solid/relinearised_contact.hpp"
 #include "solid/signed_distance.hpp"
 
@@ -16,19 +16,33 @@ namespace fsi {
 
 class ContactGap {
  public:
-  ContactGap(const Case& c, const StructureSetup& s);
+  // `mesh`: the structure's reference mesh (labels Gamma_C, Gamma_D).
+  ContactGap(const Case& c, const Mesh& mesh);
 
   bool normal() const { return normal_; }
+  // "normal": the constraint linearised at rest (the structure's first constraint).
+  ContactConstraint at_rest(const Mesh& mesh) const;
   // The contact solution for load b_S: one QP ("paper"), or re-linearised QPs from
   // u_start ("normal"; empty: from rest). QpError and SolverFailure propagate.
-  ContactSolution solve(StructureSetup& s, const Eigen::VectorXd& b_S, const Eigen::VectorXd& u_start = {},
+  ContactSolution solve(ElasticContactSolver& solver, const Eigen::VectorXd& b_S, const Eigen::VectorXd& u_start = {},
                         const ContactSolution* warm = nullptr);
-  // The exact signed distance's minimum over the candidates at u (m; negative: the
-  // structure penetrates an obstacle).
-  double min_gap(const Mesh& mesh, const Eigen::VectorXd& u) const;
-  int linearisations() const { return linearisations_; }
   // "normal": the constraint of `solver` linearised about u (a coupled run's pass).
   void relinearise(ElasticContactSolver& solver, const Eigen::VectorXd& u) const;
+  // The exact signed distance's minimum over the candidates at u (m; negative: the
+  // structure penetrates an obstacle).
+  // all_vertices: over every vertex instead (the structure at rest inside an obstacle).
+  double min_gap(const Mesh& mesh, const Eigen::VectorXd& u, bool all_vertices = false) const;
+  int linearisations() const { return linearisations_; }
+
+  // Per obstacle, in the case's order: the active rows nearest to it, their reference
+  // X1 extent and the contact reaction Σ α_i w_i n_i on the structure (N/m).
+  struct PerObstacle {
+    int active_nodes = 0;
+    double x_min = 0, x_max = 0;
+    Point force = Point::Zero();
+  };
+  std::vector<PerObstacle> per_obstacle(const ElasticContactSolver& solver, const ContactSolution& s) const;
+  std::size_t count() const { return obstacles_.size(); }
 
  private:
   bool normal_;

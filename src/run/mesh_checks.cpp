@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/contact_gap.hpp"
 #include "solid/obstacle.hpp"
 
 namespace fsi {
@@ -105,6 +106,14 @@ void check_clamped(const Case& c, const Mesh& mesh, const std::string& what) {
 }
 
 void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {
+  if (c.obstacles_given) {  // [[obstacles]]: every vertex outside every obstacle
+    const ContactGap gap(c, mesh);
+    const double d = gap.min_gap(mesh, Eigen::VectorXd::Zero(2 * mesh.num_vertices()), /*all_vertices=*/true);
+    if (d < 0)
+      throw InputError(c.source + ": " + what + ": the structure starts inside an obstacle of [[obstacles]] (by " +
+                       shortest(-d) + " m); allowed: every vertex outside every obstacle");
+    return;
+  }
   const auto& o = c.obstacle;
   for (const Point& X : mesh.vertices)
     if ((X - Point(o.x0, o.y0)).norm() < o.r)
@@ -154,7 +163,7 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
     check_extent(c, mesh);
     check_labelled(c, mesh, what);
   }
-  check_contact_zone(c, mesh, what);
+  if (c.contact.gap == "paper") check_contact_zone(c, mesh, what);  // ψ's span; "normal" needs none
   check_clamped(c, mesh, what);
   check_outside_disk(c, mesh, what);
   if (c.fluid) check_inside_box(c, mesh, what);

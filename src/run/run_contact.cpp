@@ -52,15 +52,13 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
 
   StructureSetup s;
   ContactSolution solution;
-  std::unique_ptr<ContactGap> gap;
   {
     ScopedPhase phase(times, "structure");
     s = make_structure(c, std::move(mesh), progress);
     fault_point("structure");
     try {
       fault_point("contact");
-      gap = std::make_unique<ContactGap>(c, s);
-      solution = gap->solve(s, s.b_applied);
+      solution = s.gap->solve(*s.solver, s.b_applied);
     } catch (const QpError& e) {
       throw SolverFailure(std::string("structure: contact QP failed: ") + e.what());
     }
@@ -85,9 +83,8 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   j["min_displacement_y"] = u2.minCoeff();
   j["tip_displacement"] = point_json(displacement_at(s.mesh(), solution.u, tip_of(c)));
   j["contact"] = to_json(contact);
-  j["contact"]["gap"] = c.contact.gap;
-  j["contact"]["min_gap"] = gap->min_gap(s.mesh(), solution.u);
-  j["contact"]["linearisations"] = gap->linearisations();
+  add_gap_summary(j["contact"], c, s, solution);
+  j["contact"]["linearisations"] = s.gap->linearisations();
   j["kkt"] = to_json(solution.qp.kkt);
   r.report = contact_report(c, stats, s, solution, contact, max_u, u2.minCoeff());
 

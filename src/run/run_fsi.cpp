@@ -107,7 +107,7 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   loop.progress = progress;
   loop.complete_at_end = c.output.png || c.output.vtu;
   if (initial) loop.initial = *initial;
-  const ContactGap gap(c, s);
+  const ContactGap& gap = *s.gap;
   if (gap.normal()) {
     // From the linearisation at rest, whatever a cached setup's last run left (a sweep's
     // row must give the numbers of a run of its own).
@@ -278,8 +278,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
     j["contact"] = to_json(cs);
-    j["contact"]["gap"] = c.contact.gap;
-    j["contact"]["min_gap"] = ContactGap(c, s).min_gap(s.mesh(), u);
+    add_gap_summary(j["contact"], c, s, result.structure);
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
   }

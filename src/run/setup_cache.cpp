@@ -13,7 +13,9 @@ namespace fsi {
 // The mesh files' names are appended as they are: json_text replaces bytes that are
 // not UTF-8, so two such names could otherwise share a key.
 std::string structure_mesh_key(const Case& c) {
-  return json_text(to_json(c.structure)) + json_text(to_json(c.obstacle)) + '\0' + c.structure.mesh;
+  const Json all = to_json(c);  // [[obstacles]] too, which shape the contact constraint
+  const std::string obstacles = all.contains("obstacles") ? json_text(all["obstacles"]) : std::string();
+  return json_text(to_json(c.structure)) + json_text(to_json(c.obstacle)) + obstacles + '\0' + c.structure.mesh;
 }
 
 std::string fluid_mesh_key(const Case& c) {

@@ -14,13 +14,45 @@ namespace {
 const Rgb kRed{0.85, 0.1, 0.1}, kGrey{0.55, 0.55, 0.55}, kDark{0.15, 0.15, 0.15},
     kOrange{0.95, 0.55, 0.1};
 
-std::vector<Point> disk_polygon(const ObstacleParams& o, int segments = 360) {
+std::vector<Point> disk_polygon(double x0, double y0, double r, int segments = 360) {
   std::vector<Point> p;
   for (int k = 0; k < segments; ++k) {
     const double t = 2 * std::numbers::pi * k / segments;
-    p.emplace_back(o.x0 + o.r * std::cos(t), o.y0 + o.r * std::sin(t));
+    p.emplace_back(x0 + r * std::cos(t), y0 + r * std::sin(t));
   }
   return p;
+}
+
+// The frame `box` cut by the half-plane {(x − q)·n ≤ 0} (one Sutherland–Hodgman step).
+std::vector<Point> half_plane_polygon(const Point& q, const Point& n, const WorldBox& box) {
+  const std::vector<Point> frame = {{box.x_min, box.y_min}, {box.x_max, box.y_min}, {box.x_max, box.y_max},
+                                    {box.x_min, box.y_max}};
+  std::vector<Point> out;
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    const Point &a = frame[i], &b = frame[(i + 1) % frame.size()];
+    const double da = (a - q).dot(n), db = (b - q).dot(n);
+    if (da <= 0) out.push_back(a);
+    if ((da < 0) != (db < 0) && da != db) out.push_back(a + (b - a) * (da / (da - db)));
+  }
+  return out;
+}
+
+// Every obstacle of the case: [obstacle]'s disk, or those of [[obstacles]].
+std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox& box) {
+  if (!c.obstacles_given) return {disk_polygon(c.obstacle.x0, c.obstacle.y0, c.obstacle.r)};
+  std::vector<std::vector<Point>> out;
+  for (const ObstacleSpec& o : c.obstacles)
+    out.push_back(o.shape == "disk" ? disk_polygon(o.x0, o.y0, o.r) : half_plane_polygon(o.point, o.normal, box));
+  return out;
+}
+
+// The lowest point of the obstacles' tops the frame should show.
+double lowest_obstacle_top(const Case& c) {
+  if (!c.obstacles_given) return c.obstacle.y0 + 0.3 * c.obstacle.r;
+  double y = 0;
+  for (const ObstacleSpec& o : c.obstacles)
+    y = std::min(y, o.shape == "disk" ? o.y0 + 0.3 * o.r : o.point.y() - 0.002);
+  return y;
 }
 
 }  // namespace
@@ -51,7 +83,7 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   const Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
   const auto& o = c.obstacle;
   // Frame: the structure before and after, and the top of the obstacle.
-  WorldBox box{0, c.structure.L, std::min(0.0, o.y0 + 0.3 * o.r), c.structure.H};
+  WorldBox box{0, c.structure.L, std::min(0.0, lowest_obstacle_top(c)), c.structure.H};
   for (const Point& p : def.vertices) {
     box.x_min = std::min(box.x_min, p.x());
     box.x_max = std::max(box.x_max, p.x());
@@ -61,7 +93,8 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   const double pad = 0.06 * std::max(box.x_max - box.x_min, box.y_max - box.y_min);
   box = {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
   const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
-  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle");
+  const bool several = c.obstacles_given && c.obstacles.size() != 1;
+  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle" + (several ? "s" : ""));
   const ContactSummary cs = summarize_contact(*s.solver, solution);
   char line[256];
   std::snprintf(line, sizeof line,
@@ -77,13 +110,16 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   else
     std::snprintf(line, sizeof line, "no contact");
   fig.note(line);
-  fig.filled_polygon(disk_polygon(o), {0.82, 0.82, 0.82});
-  fig.polyline(disk_polygon(o), kDark, 1.2, true);
+  for (const auto& outline : obstacle_outlines(c, box)) {
+    if (outline.size() < 3) continue;
+    fig.filled_polygon(outline, {0.82, 0.82, 0.82});
+    fig.polyline(outline, kDark, 1.2, true);
+  }
   fig.shade(def, magnitude, 0.0, magnitude.maxCoeff());
   for (const auto& loop : boundary_loops(ref)) fig.polyline(loop, kGrey, 1.2, true, true);
   for (const auto& loop : boundary_loops(def)) fig.polyline(loop, kDark, 1.0, true);
   // Γ_C on the reference outline, and the active part on the deformed one.
-  fig.polyline({Point(o.xc_min(), 0), Point(o.xc_max(), 0)}, kOrange, 3.0);
+  if (!c.obstacles_given) fig.polyline({Point(o.xc_min(), 0), Point(o.xc_max(), 0)}, kOrange, 3.0);
   const std::vector<int> active = active_vertices(*s.solver, solution);
   for (const auto& e : ref.edges_on(ref.label("Gamma_C"))) {
     const bool a0 = std::find(active.begin(), active.end(), e.v[0]) != active.end();

@@ -1,5 +1,7 @@
 #include "run/structure_setup.hpp"
 
+#include <cmath>
+
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/mesh_checks.hpp"
@@ -18,7 +20,10 @@ Mesh build_structure_mesh(const Case& c) {
   const auto& o = c.obstacle;
   if (s.mesh.empty()) {
     try {
-      return generate_structure_mesh({s.L, s.H, o.xc_min(), o.xc_max(), s.h});
+      // With [[obstacles]] Gamma_C is only a label (contact.boundary = "all"): the
+      // bottom's middle third.
+      const double xc0 = c.obstacles_given ? s.L / 3 : o.xc_min(), xc1 = c.obstacles_given ? 2 * s.L / 3 : o.xc_max();
+      return generate_structure_mesh({s.L, s.H, xc0, xc1, s.h});
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the structure failed: ") + e.what());
     }
@@ -42,9 +47,12 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   s.qp->progress = progress;
   const int gamma_c = mesh.label("Gamma_C");
   const std::vector<int> fixed = clamped_dofs(mesh, mesh.label("Gamma_D"));
+  s.gap = std::make_shared<ContactGap>(c, mesh);
   try {
-    s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation,
-                                                      gamma_c, fixed, *s.qp);
+    if (s.gap->normal())  // its first constraint: linearised at rest (no ψ: the obstacles need not be the paper's disk)
+      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, s.gap->at_rest(mesh), gamma_c, fixed, *s.qp);
+    else
+      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation, gamma_c, fixed, *s.qp);
   } catch (const QpError& e) {
     throw SolverFailure(std::string("structure: ") + e.what());
   }
@@ -53,6 +61,23 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   s.b_applied = assemble_volume_load(m, [f](const Point&) { return f; }, 1) +
                 assemble_surface_load(m, m.label("Gamma_N"), [h_N](const Point&) { return h_N; }, 1);
   return s;
+}
+
+void add_gap_summary(nlohmann::ordered_json& contact, const Case& c, const StructureSetup& s,
+                     const ContactSolution& solution) {
+  contact["gap"] = c.contact.gap;
+  const double g = s.gap->min_gap(s.mesh(), solution.u);
+  contact["min_gap"] = std::isfinite(g) ? nlohmann::ordered_json(g) : nlohmann::ordered_json(nullptr);
+  if (!s.gap->normal()) return;
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const ContactGap::PerObstacle& o : s.gap->per_obstacle(*s.solver, solution)) {
+    nlohmann::ordered_json e = {{"active_nodes", o.active_nodes}};
+    e["x_min"] = o.active_nodes ? nlohmann::ordered_json(o.x_min) : nlohmann::ordered_json(nullptr);
+    e["x_max"] = o.active_nodes ? nlohmann::ordered_json(o.x_max) : nlohmann::ordered_json(nullptr);
+    e["force"] = {o.force.x(), o.force.y()};
+    list.push_back(e);
+  }
+  contact["obstacles"] = list;
 }
 
 }  // namespace fsi

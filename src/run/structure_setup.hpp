@@ -3,11 +3,13 @@
 #pragma once
 
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <memory>
 #include <string>
 
 #include "io/case.hpp"
 #include "qp/qp_problem.hpp"
+#include "run/contact_gap.hpp"
 #include "solid/contact_solver.hpp"
 #include "solid/obstacle.hpp"
 
@@ -15,6 +17,7 @@ namespace fsi {
 
 struct StructureSetup {
   Lame lame;
+  std::shared_ptr<ContactGap> gap;  // contact.gap's rule, obstacles and candidates
   std::unique_ptr<DiskFoundation> foundation;
   std::unique_ptr<QpSolver> qp;
   std::unique_ptr<ElasticContactSolver> solver;
@@ -33,5 +36,9 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
                               const std::function<void(const std::string&)>& progress);
 
 std::unique_ptr<QpSolver> make_qp_solver(const std::string& name);
+
+// summary.json's contact.gap, min_gap (null without obstacles) and, with "normal",
+// obstacles[i].{active_nodes, x_min, x_max, force} (SPEC §9).
+void add_gap_summary(nlohmann::ordered_json& contact, const Case& c, const StructureSetup& s, const ContactSolution& solution);
 
 }  // namespace fsi

@@ -42,6 +42,16 @@ Json to_json(const Case& c) {
   j["name"] = c.name;
   j["structure"] = to_json(c.structure);
   j["obstacle"] = to_json(c.obstacle);
+  if (c.obstacles_given) {
+    Json list = Json::array();
+    for (const ObstacleSpec& o : c.obstacles) {
+      Json e = {{"shape", o.shape}};
+      if (o.shape == "disk") e["x0"] = o.x0, e["y0"] = o.y0, e["r"] = o.r;
+      if (o.shape == "half-plane") e["point"] = {o.point.x(), o.point.y()}, e["normal"] = {o.normal.x(), o.normal.y()};
+      list.push_back(e);
+    }
+    j["obstacles"] = list;
+  }
   if (c.fluid) j["fluid"] = to_json(*c.fluid);
   j["coupling"] = to_json(c.coupling);
   j["contact"] = to_json(c.contact);

@@ -55,10 +55,15 @@ std::vector<int> clamped_dofs(const Mesh& mesh, int label) {
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
                                            const Foundation& foundation, int gamma_c_label,
                                            const std::vector<int>& fixed_dofs, QpSolver& solver)
+    : ElasticContactSolver(Mesh(mesh), lame, assemble_contact(mesh, gamma_c_label, foundation), gamma_c_label,
+                           fixed_dofs, solver) {}
+
+ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
+                                           const std::vector<int>& fixed_dofs, QpSolver& solver)
     : mesh_(std::move(mesh)),
       gamma_c_label_(gamma_c_label),
       A_S_(assemble_elasticity(mesh_, lame)),
-      contact_(assemble_contact(mesh_, gamma_c_label, foundation)),
+      contact_(std::move(contact)),
       solver_(solver) {
   const int n = 2 * mesh_.num_vertices();
   std::vector<bool> fixed(n, false);

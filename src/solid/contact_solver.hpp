@@ -25,6 +25,10 @@ class ElasticContactSolver {
   ElasticContactSolver(Mesh mesh, const Lame& lame, const Foundation& foundation,
                        int gamma_c_label, const std::vector<int>& fixed_dofs, QpSolver& solver);
 
+  // The same with a given constraint (contact.gap = "normal": the signed distance's).
+  ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
+                       const std::vector<int>& fixed_dofs, QpSolver& solver);
+
   ContactSolution solve(const Eigen::VectorXd& b_S, const ContactSolution* warm = nullptr);
 
   // The undeformed state u = 0 with no contact (α = 0, no active row): the state

@@ -42,9 +42,9 @@ RelinearisedContact solve_relinearised(ElasticContactSolver& solver, const Candi
     r.linearisations = k;
     r.min_gap = min_exact_gap(mesh, candidates, obstacles, r.solution.u);
     r.last_change = max_nodal_change(r.solution.u, u_k, nv);
+    if (r.last_change <= tol && r.min_gap >= -tol) return r;
     u_k = r.solution.u;
     warm = &r.solution;
-    if (r.last_change <= tol && r.min_gap >= -tol) return r;
   }
   throw SolverFailure("contact.gap = \"normal\": the linearisation did not settle in " +
                       std::to_string(options.max_linearisations) + " passes (last change " + approx(r.last_change, 3) +

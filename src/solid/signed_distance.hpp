@@ -31,6 +31,33 @@ class DiskObstacle final : public Obstacle {
   double r_;
 };
 
+// Not reachable from a case yet ([[obstacles]] refuses polygons: the re-linearisation
+// cycles at corners, solid/relinearised_contact.hpp); kept, tested, for that work.
+// A simple closed polygon (either orientation): d = ± the distance to its nearest edge
+// (negative inside, by the crossing-number test), n from the nearest boundary point
+// towards x (away from x inside); on the boundary itself, the nearest edge's outward
+// normal.
+class PolygonObstacle final : public Obstacle {
+ public:
+  explicit PolygonObstacle(std::vector<Point> points);
+  SignedDistance at(const Point& x) const override;
+
+ private:
+  bool inside(const Point& x) const;
+  std::vector<Point> p_;
+  bool ccw_;
+};
+
+// {x : (x − point)·n ≤ 0}, n the unit outward normal: d = (x − point)·n, n constant.
+class HalfPlaneObstacle final : public Obstacle {
+ public:
+  HalfPlaneObstacle(Point point, Point normal) : point_(std::move(point)), n_(normal.normalized()) {}
+  SignedDistance at(const Point& x) const override { return {(x - point_).dot(n_), n_}; }
+
+ private:
+  Point point_, n_;
+};
+
 // The nearest of several obstacles (the smallest d) and which one it is.
 struct NearestObstacle {
   SignedDistance gap;

@@ -44,8 +44,8 @@ Solved solve(const std::vector<std::string>& sets) {
   const Case c = load_case(kFig5, sets);
   Solved out;
   out.s = make_structure(c, make_structure_mesh(c), nullptr);
-  ContactGap gap(c, out.s);
-  out.solution = gap.solve(out.s, out.s.b_applied);
+  ContactGap& gap = *out.s.gap;
+  out.solution = gap.solve(*out.s.solver, out.s.b_applied);
   out.min_gap = gap.min_gap(out.s.mesh(), out.solution.u);
   out.linearisations = gap.linearisations();
   return out;
