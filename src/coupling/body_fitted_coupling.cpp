@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
+#include "coupling/pass_steps.hpp"
 #include "coupling/phase_guard.hpp"
 
 namespace fsi {
@@ -32,13 +32,7 @@ CouplingResult BodyFittedCoupling::run() {
 }
 
 void BodyFittedCoupling::iterate(CouplingResult& result) {
-  const int nv = p_.structure.mesh().num_vertices();
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * nv);  // u⁰ = 0
-  if (initial.size() != 0) {
-    if (initial.size() != u.size() || !initial.allFinite())
-      throw std::invalid_argument("BodyFittedCoupling: the initial displacement does not fit the structure's mesh");
-    u = p_.structure.project(initial);
-  }
+  Eigen::VectorXd u = initial_iterate(p_.structure, initial);
   const ContactSolution* warm = nullptr;
   auto fail = [&](const std::string& phase, const std::string& what) {
     throw SolverFailure(phase + " failed at fixed-point iteration " +
@@ -80,11 +74,7 @@ void BodyFittedCoupling::iterate(CouplingResult& result) {
     const bool converged = rec.increment < tol_;
     result.history.push_back(rec);
     if (!converged && k < max_iterations_) {
-      u = guarded("the relaxation (" + p_.relaxation.name() + ")", k,
-                  [&] { return p_.relaxation.next(u, result.structure.u); });
-      if (!u.allFinite())
-        fail("the relaxation (" + p_.relaxation.name() + ")", "non-finite iterate");
-      rec.omega = result.history.back().omega = p_.relaxation.omega();
+      u = relaxed_iterate(p_.relaxation, u, result.structure.u, k, rec, result);
     }
     if (progress) {
       char omega[16] = "-";

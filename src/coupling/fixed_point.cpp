@@ -1,6 +1,5 @@
 #include "coupling/fixed_point.hpp"
 
-#include <stdexcept>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +9,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
+#include "coupling/pass_steps.hpp"
 #include "coupling/phase_guard.hpp"
 
 namespace fsi {
@@ -71,12 +71,7 @@ CouplingResult FixedPointCoupling::run() {
 void FixedPointCoupling::iterate(CouplingResult& result) {
   const Mesh& reference = p_.structure.mesh();
   const int nv = reference.num_vertices();
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * nv);  // u⁰ = 0: feasible at rest
-  if (initial.size() != 0) {
-    if (initial.size() != u.size() || !initial.allFinite())
-      throw std::invalid_argument("FixedPointCoupling: the initial displacement does not fit the structure's mesh");
-    u = p_.structure.project(initial);  // feasible, so that χ and the QP start from a state the QP allows
-  }
+  Eigen::VectorXd u = initial_iterate(p_.structure, initial);
   const ContactSolution* warm = nullptr;
   auto fail = [&](const std::string& phase, const std::string& what) {
     throw SolverFailure(phase + " failed at fixed-point iteration " +
@@ -150,10 +145,7 @@ void FixedPointCoupling::iterate(CouplingResult& result) {
     const bool converged = rec.increment < tol_;
     result.history.push_back(rec);  // recorded before relaxing: kept if that fails
     if (!converged && k < max_iterations_) {
-      u = guarded("the relaxation (" + p_.relaxation.name() + ")", k,
-                  [&] { return p_.relaxation.next(u, result.structure.u); });
-      if (!u.allFinite()) fail("the relaxation (" + p_.relaxation.name() + ")", "non-finite iterate");
-      rec.omega = result.history.back().omega = p_.relaxation.omega();
+      u = relaxed_iterate(p_.relaxation, u, result.structure.u, k, rec, result);
     }
     if (progress) {
       char omega[16] = "-";

@@ -1,0 +1,26 @@
+// Steps both coupling loops take the same way (FixedPointCoupling, the penalised
+// fluid; BodyFittedCoupling, the body-fitted one): the first iterate, and the
+// relaxation after a pass that did not converge.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "coupling/fixed_point.hpp"
+#include "coupling/relaxation.hpp"
+#include "solid/contact_solver.hpp"
+
+namespace fsi {
+
+// u⁰: the structure at rest, or `initial` (a restart's) projected onto the feasible
+// set, so that the first pass starts from a state the QP allows. Throws
+// std::invalid_argument if `initial` does not fit the mesh or is not finite (a bug of
+// the caller, not a failed solve).
+Eigen::VectorXd initial_iterate(ElasticContactSolver& structure, const Eigen::VectorXd& initial);
+
+// u^{k+1} = relaxation(u^k, ũ^{k+1}) after pass k, its ω recorded in `rec` and in the
+// last history record; a SolverFailure naming the relaxation and the pass if it fails
+// or gives a non-finite iterate.
+Eigen::VectorXd relaxed_iterate(Relaxation& relaxation, const Eigen::VectorXd& u, const Eigen::VectorXd& u_tilde,
+                                int k, IterationRecord& rec, CouplingResult& result);
+
+}  // namespace fsi
