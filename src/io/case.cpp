@@ -108,6 +108,21 @@ void check_name(const std::string& name, const Origin& origin) {
 
 const std::set<std::string> kSections = {"structure", "obstacle", "obstacles", "fluid", "coupling", "contact", "output", "name"};
 
+// structure.shape and the files it names agree: one file, the one the shape reads.
+void check_shape_files(const StructureParams& p, const Origin& origin) {
+  const char* allowed = "shape = \"rectangle\" with neither file, \"mesh\" with structure.mesh, "
+                        "\"geo\" with structure.geo";
+  if (!p.mesh.empty() && !p.geo.empty())
+    fail(origin, "structure.geo", "and structure.mesh are both given", allowed);
+  if (p.shape == "rectangle" && !(p.mesh.empty() && p.geo.empty()))
+    fail(origin, "structure.shape", "= \"rectangle\" is generated from L and H, but structure." +
+                                        std::string(p.mesh.empty() ? "geo" : "mesh") + " is given", allowed);
+  if (p.shape == "mesh" && p.mesh.empty())
+    fail(origin, "structure.shape", "= \"mesh\" needs the file structure.mesh", allowed);
+  if (p.shape == "geo" && p.geo.empty())
+    fail(origin, "structure.shape", "= \"geo\" needs the script structure.geo", allowed);
+}
+
 // ν → 0.5 makes λ/μ = 2ν/(1 − 2ν) grow without bound and A_S singular in double
 // precision: measured, the Cholesky factorisation failed at ν = 0.49999999999999
 // (λ/μ = 3.5e13) and held at 0.499999999999 (5e11). λ/μ ≤ 1e8 keeps a margin of 5000.
@@ -117,6 +132,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
                     std::vector<std::string>* known) {
   Section s(section_table(root, "structure", origin), "structure", origin, known);
   auto& p = c.structure;
+  p.extent_given = s.has("L") || s.has("H");
   p.L = s.number("L", p.L, kSize);
   p.H = s.number("H", p.H, kSize);
   p.E = s.number("E", p.E, kSize);
@@ -125,6 +141,9 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.h_N = s.vector2("h_N", p.h_N);
   p.h = s.number("h", p.h, kSize);
   p.mesh = resolve_path(s.text("mesh", ""), case_path);
+  p.geo = resolve_path(s.text("geo", ""), case_path);
+  p.shape = s.choice("shape", !p.mesh.empty() ? "mesh" : !p.geo.empty() ? "geo" : "rectangle", {"rectangle", "mesh", "geo"});
+  check_shape_files(p, origin);
   s.reject_unknown();
 }
 
@@ -296,9 +315,10 @@ std::string to_toml(const Case& c) {
   toml::table t;
   t.insert("name", c.name);
   const auto& s = c.structure;
-  toml::table st{{"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)},
-                 {"h_N", vec(s.h_N)}, {"h", s.h}};
+  toml::table st{{"shape", s.shape}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)}, {"h_N", vec(s.h_N)}, {"h", s.h}};
+  if (s.rectangle() || s.extent_given) st.insert("L", s.L), st.insert("H", s.H);  // a file's own extent otherwise
   if (!s.mesh.empty()) st.insert("mesh", s.mesh);
+  if (!s.geo.empty()) st.insert("geo", s.geo);
   t.insert("structure", st);
   const auto& o = c.obstacle;
   if (!c.obstacles_given) {

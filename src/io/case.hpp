@@ -12,12 +12,20 @@
 namespace fsi {
 
 struct StructureParams {
+  // SPEC §9: "rectangle" (L × H, generated) | "mesh" (the .msh file `mesh`) | "geo"
+  // (the Gmsh script `geo`, meshed at h). A mesh given without shape means "mesh".
+  std::string shape = "rectangle";
   double L = 0.3, H = 0.03;
+  bool extent_given = false;  // L or H set: a mesh's or script's extent must match
   double E = 3.0e5, nu = 0.45;
   Point f{0.0, -9.81 * 1100.0};  // f_S, N/m³
   Point h_N{0.0, 0.0};           // surface load on Γ_N, N/m²
   double h = 0.015;              // hS
   std::string mesh;              // optional .msh file (resolved path)
+  std::string geo;               // the .geo script of shape "geo" (resolved path)
+  bool rectangle() const { return shape == "rectangle"; }
+  // The given file (mesh or script), for messages; empty for the rectangle.
+  const std::string& file() const { return shape == "geo" ? geo : mesh; }
 };
 
 struct ObstacleParams {
@@ -122,6 +130,12 @@ Case load_case_text(const std::string& text, const std::string& origin,
 
 // The p of coupling.eps_rule "h^p" (0 for "fixed"); none if the rule is not known.
 std::optional<double> eps_rule_power(const std::string& rule);
+
+// The loads' strain scale against the small strains of linear elasticity, for a
+// structure of diameter `diam`: the problem in words ("structure.E = ... is too soft
+// ...; allowed: ...") or "" (checked by load_case for the rectangle, by the mesh checks
+// for a structure from a file, whose diameter is known once it is read).
+std::string load_strain_problem(const Case& c, double diam);
 
 // Every key a case may set ("name", "structure.L", ...), in the order they are read.
 std::vector<std::string> case_keys();

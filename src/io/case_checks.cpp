@@ -67,23 +67,10 @@ void check_rectangle_against_obstacle(const Case& c, const Origin& o) {
          "y0 + r <= 0 (the disk's top below the structure's bottom y = 0)");
 }
 
-// The loads' strain scale (|f_S|·diam + |h_N|)/E: linear elasticity means ≪ 1.
+// The rectangle's: the strain check of load_strain_problem with its diameter.
 void check_strain(const Case& c, const Origin& o) {
-  const auto& s = c.structure;
-  const double diam = std::hypot(s.L, s.H);
-  const double strain = (s.f.norm() * diam + s.h_N.norm()) / s.E;
-  if (!(strain <= kMaxStrainScale))
-    fail(o, "structure.E", "= " + shortest(s.E) + " is too soft for the loads: they strain the structure by about " +
-                               approx(strain) + " ((|structure.f| * diam + |structure.h_N|) / E)",
-         "a strain scale <= " + shortest(kMaxStrainScale) + ": a larger structure.E or smaller loads");
-  if (!c.fluid) return;
-  const auto& f = *c.fluid;
-  // The fluid's stresses on the structure: viscous (μ Vmax / hF) and its weight.
-  const double fluid_strain = (f.mu * std::abs(f.Vmax) / f.h + f.f.norm() * diam) / s.E;
-  if (!(fluid_strain <= kMaxStrainScale))
-    fail(o, "structure.E", "= " + shortest(s.E) + " is too soft for the fluid's stresses: they strain the structure by about " +
-                               approx(fluid_strain) + " ((fluid.mu * |fluid.Vmax| / fluid.h + |fluid.f| * diam) / E)",
-         "a strain scale <= " + shortest(kMaxStrainScale) + ": a larger structure.E, or smaller fluid loads");
+  const std::string problem = load_strain_problem(c, std::hypot(c.structure.L, c.structure.H));
+  if (!problem.empty()) throw InputError(o.of("structure.E") + ": " + problem);
 }
 
 // The generated box: the disk inside it with room for a triangle between it and
@@ -191,7 +178,7 @@ void check_obstacles(const Case& c, const Origin& o) {
   if (c.fluid)
     fail(o, "obstacles", "are for the contact problem in this version (no [fluid]): the fluid box has the paper's one disk",
          "[obstacle] with a [fluid] section");
-  if (c.structure.mesh.empty() && c.contact.boundary != "all")
+  if (c.structure.rectangle() && c.contact.boundary != "all")
     fail(o, "contact.boundary", "= \"" + c.contact.boundary + "\": the generated rectangle's Gamma_C follows [obstacle]'s disk",
          "\"all\" with [[obstacles]] and a generated structure");
 }
@@ -199,23 +186,48 @@ void check_obstacles(const Case& c, const Origin& o) {
 }  // namespace
 
 void check_case(const Case& c, const Origin& origin) {
-  // With a mesh file the structure's geometry is the mesh's, checked when it is read
-  // (run/structure_setup.cpp): L and H must then equal its extent.
+  // With a mesh file or a script the structure's geometry is the mesh's, checked when
+  // it is made (run/mesh_checks.cpp): L and H, if given, must then equal its extent.
   check_obstacles(c, origin);
-  if (c.structure.mesh.empty()) {
+  const bool rectangle = c.structure.rectangle();
+  if (rectangle) {
     check_structure_mesh_size(c, origin);
     if (!c.obstacles_given) {  // Γ_C and the disk of [obstacle]
       check_contact_zone(c, origin);
       check_rectangle_against_obstacle(c, origin);
     }
+    check_strain(c, origin);
   }
-  check_strain(c, origin);
   check_contact_gap(c, origin);
   if (!c.fluid) return;
-  check_structure_in_box(c, origin);
+  if (rectangle) check_structure_in_box(c, origin);
   check_fluid_method(c, origin);
   check_fluid_band(c, origin);
   if (c.fluid->mesh.empty()) check_fluid_box(c, origin);
 }
 
 }  // namespace fsi::case_detail
+
+namespace fsi {
+
+// The loads' strain scale (|f_S|·diam + |h_N|)/E: linear elasticity means ≪ 1.
+std::string load_strain_problem(const Case& c, double diam) {
+  using case_detail::kMaxStrainScale;
+  const auto& s = c.structure;
+  const double strain = (s.f.norm() * diam + s.h_N.norm()) / s.E;
+  if (!(strain <= kMaxStrainScale))
+    return "structure.E = " + shortest(s.E) + " is too soft for the loads: they strain the structure by about " +
+           approx(strain) + " ((|structure.f| * diam + |structure.h_N|) / E); allowed: a strain scale <= " +
+           shortest(kMaxStrainScale) + ": a larger structure.E or smaller loads";
+  if (!c.fluid) return "";
+  const auto& f = *c.fluid;
+  // The fluid's stresses on the structure: viscous (μ Vmax / hF) and its weight.
+  const double fluid_strain = (f.mu * std::abs(f.Vmax) / f.h + f.f.norm() * diam) / s.E;
+  if (!(fluid_strain <= kMaxStrainScale))
+    return "structure.E = " + shortest(s.E) + " is too soft for the fluid's stresses: they strain the structure by about " +
+           approx(fluid_strain) + " ((fluid.mu * |fluid.Vmax| / fluid.h + |fluid.f| * diam) / E); allowed: a strain "
+           "scale <= " + shortest(kMaxStrainScale) + ": a larger structure.E, or smaller fluid loads";
+  return "";
+}
+
+}  // namespace fsi

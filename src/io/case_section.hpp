@@ -103,6 +103,8 @@ class Section {
     if (!(b[0] < b[2] && b[1] < b[3])) fail(origin_, full(key), "is an empty box", allowed);
     box = b;
   }
+  // Whether the section sets `key` (without reading it).
+  bool has(const std::string& key) const { return table_ && table_->contains(key); }
   void reject_unknown() const {
     if (!table_) return;
     for (auto&& [k, v] : *table_) {

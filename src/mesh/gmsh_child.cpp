@@ -150,6 +150,15 @@ void arrange_signals_and_limits(std::size_t address_space_cap) {
   }
 }
 
+}  // namespace
+
+void forbid_side_effects() {
+  lower_limit(RLIMIT_FSIZE, 0);
+  lower_limit(RLIMIT_NPROC, 0);
+}
+
+namespace {
+
 // ---- parent side ----
 
 class UniqueFd {

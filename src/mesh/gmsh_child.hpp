@@ -27,6 +27,12 @@ struct ChildTask {
 std::vector<char> run_in_child(const std::function<std::vector<char>()>& job, const ChildTask& task,
                                const ChildLimits& limits);
 
+// Inside a child's job, before it runs what it was not written by us (a user's .geo
+// script): from here on no file may grow beyond zero bytes and no process or thread be
+// started (RLIMIT_FSIZE, RLIMIT_NPROC; the latter has no effect for root). A second
+// fence behind geo_script.hpp's refusals.
+void forbid_side_effects();
+
 // Physical memory of this machine in bytes (0 if unknown).
 std::size_t physical_memory();
 

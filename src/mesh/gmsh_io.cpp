@@ -1,11 +1,13 @@
 #include "mesh/gmsh_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 
 #include "mesh/gmsh_child.hpp"
+#include "mesh/geo_script.hpp"
 #include "mesh/gmsh_model.hpp"
 #include "mesh/mesh_builder.hpp"
 #include "mesh/mesh_validation.hpp"
@@ -25,12 +27,18 @@ double reference_length(double extent) {
   return std::ldexp(1.0, exponent);
 }
 
-Mesh build_and_validate(RawMesh raw, double unit, const std::vector<std::string>& boundary_groups,
-                        const std::string& domain_group) {
+// `optional_groups` present in `raw` are built like the required ones; the absent
+// become empty labels, so that the solvers find every label they ask for.
+Mesh build_and_validate(RawMesh raw, double unit, std::vector<std::string> boundary_groups,
+                        const std::string& domain_group, const std::vector<std::string>& optional_groups = {}) {
   if (unit != 1)
     for (double& c : raw.coords) c *= unit;
+  for (const auto& name : optional_groups)
+    if (std::any_of(raw.groups.begin(), raw.groups.end(), [&](const RawGroup& g) { return g.dim == 1 && g.name == name; }))
+      boundary_groups.push_back(name);
   BuiltMesh built = build_mesh(raw, boundary_groups, domain_group);
   orient_and_validate(built.mesh, built.origin);
+  for (const auto& name : optional_groups) built.mesh.add_label(name);
   return std::move(built.mesh);
 }
 
@@ -119,7 +127,8 @@ Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& bou
 }
 
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,
-                    const std::string& domain_group, const GmshLimits& limits) {
+                    const std::string& domain_group, const GmshLimits& limits,
+                    const std::vector<std::string>& optional_groups) {
   check_mesh_file(path);
   // Gmsh needs ~3 bytes of memory per byte of .msh (measured: 112 MB peak for a
   // 21 MB file, 51 MB of it the library); a header promising more than the file
@@ -134,7 +143,24 @@ Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& bou
   try {
     const std::vector<char> bytes =
         run_in_child([&] { return encode(read_in_gmsh(path)); }, task, {limits.seconds, budget});
-    return build_and_validate(decode(bytes), 1, boundary_groups, domain_group);
+    return build_and_validate(decode(bytes), 1, boundary_groups, domain_group, optional_groups);
+  } catch (const MeshError& e) {
+    throw MeshError(path + ": " + e.what());
+  }
+}
+
+Mesh mesh_geo_script(const std::string& path, double h, double max_triangles,
+                     const std::vector<std::string>& boundary_groups, const std::vector<std::string>& optional_groups,
+                     const std::string& domain_group, const GmshLimits& limits) {
+  const ScriptGeometry g{path, read_geo_script(path), h, max_triangles};
+  initialise_gmsh_once();
+  const std::size_t memory = physical_memory();
+  try {
+    const std::vector<char> bytes = run_in_child(
+        [&] { return encode(mesh_script_in_gmsh(g)); },
+        {"running and meshing it", "it may use this machine's memory, " + std::to_string(memory >> 20) + " MB"},
+        {limits.seconds, memory});
+    return build_and_validate(decode(bytes), 1, boundary_groups, domain_group, optional_groups);
   } catch (const MeshError& e) {
     throw MeshError(path + ": " + e.what());
   }

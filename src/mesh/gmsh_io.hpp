@@ -62,6 +62,21 @@ struct BodyFittedGeometry {
 Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g);
 Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g, const GmshLimits& limits);
 
+// A user's Gmsh .geo script (structure.shape = "geo", SPEC §9): read and checked by
+// geo_script.hpp, run in a child that can write no file and start no process, with
+// the variable h = the case's size defined before its first line, and meshed with
+// triangles of size at most h (Frontal-Delaunay as the generated meshes). Physical
+// groups: the surface `domain_group`, the curves `boundary_groups` (each required)
+// and `optional_groups` (labels, empty if the script has none). No unit scaling.
+struct ScriptGeometry {
+  std::string path, text;
+  double h;
+  double max_triangles;  // refused before meshing if the bounding box needs more
+};
+Mesh mesh_geo_script(const std::string& path, double h, double max_triangles,
+                     const std::vector<std::string>& boundary_groups, const std::vector<std::string>& optional_groups,
+                     const std::string& domain_group, const GmshLimits& limits = {});
+
 // Reads a Gmsh .msh file (format 4, or 2; ASCII or binary). The triangles are those
 // of the physical surface `domain_group`; every name of `boundary_groups` must be
 // a physical curve of lines on the triangulation's boundary. Throws MeshError
@@ -69,7 +84,9 @@ Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g, const GmshLimits& l
 // mesh_validation.hpp list them).
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,
                     const std::string& domain_group);
+// `optional_groups`: curves that become labels (empty ones if absent).
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,
-                    const std::string& domain_group, const GmshLimits& limits);
+                    const std::string& domain_group, const GmshLimits& limits,
+                    const std::vector<std::string>& optional_groups = {});
 
 }  // namespace fsi

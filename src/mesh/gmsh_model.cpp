@@ -1,13 +1,18 @@
 #include "mesh/gmsh_model.hpp"
 
 #include <gmsh.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <mutex>
 #include <set>
 #include <utility>
 
+#include "mesh/gmsh_child.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/mesh_error.hpp"
 
@@ -127,7 +132,79 @@ std::vector<std::string> notable_log() {
   return out;
 }
 
+// The script as a file Gmsh can open, seek in (its loops and functions rewind) and name
+// in messages, written nowhere: an anonymous memory file, "h = <h>; " put before its
+// first line so that line numbers stay the user's.
+std::string script_in_memory(const ScriptGeometry& g) {
+  const int fd = ::memfd_create("structure.geo", 0);
+  if (fd < 0) throw std::string("cannot hold the script in memory");
+  char prefix[64];
+  std::snprintf(prefix, sizeof prefix, "h = %.17g; ", g.h);
+  const std::string text = prefix + g.text;
+  for (std::size_t done = 0; done < text.size();) {
+    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
+    if (k <= 0) throw std::string("cannot hold the script in memory");
+    done += static_cast<std::size_t>(k);
+  }
+  return "/proc/self/fd/" + std::to_string(fd);
+}
+
+// `text` with the memory file's name replaced by the user's path.
+std::string in_users_words(std::string text, const std::string& memory_name, const std::string& path) {
+  for (auto at = text.find(memory_name); at != std::string::npos; at = text.find(memory_name, at + path.size()))
+    text.replace(at, memory_name.size(), path);
+  return text.substr(0, 400);
+}
+
+// The first error Gmsh logged (it logs some without throwing).
+void throw_logged_error() {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  for (const std::string& line : log)
+    if (line.rfind("Error", 0) == 0) throw line;
+}
+
+// A mesh larger than the case allows is refused before it is made: the bounding box's
+// area at size h (2.4 triangles per h², as case_checks.cpp counts a rectangle).
+void check_script_geometry(const ScriptGeometry& g) {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  std::vector<std::pair<int, int>> surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  if (surfaces.empty() || !(x1 > x0 && y1 > y0)) throw std::string("the script defines no surface");
+  if (std::abs(z1 - z0) > 1e-9 * std::max(x1 - x0, y1 - y0))
+    throw std::string("the geometry leaves the plane z = 0 (z from " + std::to_string(z0) + " to " +
+                      std::to_string(z1) + ")");
+  const double estimate = 2.4 * (x1 - x0) * (y1 - y0) / (g.h * g.h);
+  if (estimate > g.max_triangles)
+    throw std::string("its bounding box would need up to " + std::to_string(static_cast<long>(estimate)) +
+                      " triangles at structure.h = " + std::to_string(g.h) + ", above the limit of " +
+                      std::to_string(static_cast<long>(g.max_triangles)));
+}
+
 }  // namespace
+
+RawMesh mesh_script_in_gmsh(const ScriptGeometry& g) {
+  configure_gmsh(2);
+  gmsh::logger::start();
+  const std::string name = script_in_memory(g);
+  forbid_side_effects();
+  try {
+    gmsh::open(name);
+    throw_logged_error();
+    check_script_geometry(g);
+    // The case's sizes over the script's: first order triangles at most h.
+    gmsh::option::setNumber("Mesh.ElementOrder", 1);
+    gmsh::option::setNumber("Mesh.RecombineAll", 0);
+    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
+    gmsh::model::mesh::clear();
+    mesh_2d(g.h);
+    throw_logged_error();
+  } catch (const std::string& what) {  // Gmsh 4.8 throws its errors as std::string
+    throw in_users_words(what, name, g.path);
+  }
+  return extract(physical_groups());
+}
 
 void initialise_gmsh_once() {
   static std::once_flag once;

@@ -13,6 +13,7 @@ namespace fsi {
 struct StructureGeometry;
 struct FluidGeometry;
 struct BodyFittedGeometry;
+struct ScriptGeometry;
 
 // gmsh::initialize, once per process, in the parent before the first fork: each
 // child then starts from the same initialised, empty Gmsh. Initialising in every
@@ -28,6 +29,11 @@ RawMesh mesh_structure_in_gmsh(const StructureGeometry& g);
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g);
 // Physical groups D, Sigma_1 ... Sigma_5 and Gamma_u (one line per outline segment).
 RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g);
+// A user's .geo script (ScriptGeometry, checked by geo_script.hpp) run with h
+// predefined, meshed at h: its physical groups of dimension 1 and 2. Throws (as Gmsh
+// does, a std::string) on the script's first error, an empty or non-planar geometry,
+// or a bounding box that would need more than max_triangles triangles at h.
+RawMesh mesh_script_in_gmsh(const ScriptGeometry& g);
 // The file's physical groups of dimension 1 and 2, their elements, and Gmsh's
 // warnings and "Skipping ..." notes (it skips duplicated nodes, measured).
 RawMesh read_in_gmsh(const std::string& path);

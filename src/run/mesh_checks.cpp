@@ -54,15 +54,15 @@ void check_extent(const Case& c, const Mesh& mesh) {
   const Box b = bounding_box(mesh);
   const auto& s = c.structure;
   const double tol = kRelativeTolerance * std::hypot(s.L, s.H);
-  const std::string file = s.mesh;
+  const std::string file = s.file(), key = "structure." + s.shape;
   if (std::abs(b.lo.x()) > tol || std::abs(b.lo.y()) > tol)
-    throw InputError(c.source + ": structure.mesh " + file + " starts at " + at(b.lo) +
+    throw InputError(c.source + ": " + key + " " + file + " starts at " + at(b.lo) +
                      "; allowed: the reference configuration (0, L) x (0, H), its lower left corner at (0, 0)");
   if (std::abs(b.hi.x() - s.L) > tol)
-    contradiction(c, "structure.L", s.L, "structure.mesh", file, "its vertices reach x = " + shortest(b.hi.x()),
+    contradiction(c, "structure.L", s.L, key, file, "its vertices reach x = " + shortest(b.hi.x()),
                   "structure.L = " + shortest(b.hi.x()) + ", the mesh's length");
   if (std::abs(b.hi.y() - s.H) > tol)
-    contradiction(c, "structure.H", s.H, "structure.mesh", file, "its vertices reach y = " + shortest(b.hi.y()),
+    contradiction(c, "structure.H", s.H, key, file, "its vertices reach y = " + shortest(b.hi.y()),
                   "structure.H = " + shortest(b.hi.y()) + ", the mesh's thickness");
 }
 
@@ -134,10 +134,11 @@ void check_inside_box(const Case& c, const Mesh& mesh, const std::string& what) 
 }  // namespace
 
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
-                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles) {
+                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles,
+                    const std::vector<std::string>& optional_curves) {
   Mesh mesh;
   try {
-    mesh = read_gmsh_file(path, curves, surface);
+    mesh = read_gmsh_file(path, curves, surface, {}, optional_curves);
   } catch (const MeshError& e) {
     throw InputError(c.source + ": " + key + ": " + e.what());
   }
@@ -157,11 +158,24 @@ std::array<int, 2> unlabelled_boundary_edge(const Mesh& mesh) {
   return {-1, -1};
 }
 
+// A file's structure: the strain of its loads (its diameter known now), and the
+// candidate edges contact.boundary = "Gamma_C" asks for.
+void check_file_structure(const Case& c, const Mesh& mesh, const std::string& what) {
+  const Box b = bounding_box(mesh);
+  const std::string problem = load_strain_problem(c, (b.hi - b.lo).norm());
+  if (!problem.empty()) throw InputError(c.source + ": " + what + ": " + problem);
+  if (c.contact.boundary == "Gamma_C" && mesh.edges_on(mesh.label("Gamma_C")).empty())
+    throw InputError(c.source + ": " + what + " has no physical curve Gamma_C, the candidate edges of contact.boundary = "
+                     "\"Gamma_C\"; allowed: a physical curve Gamma_C, or contact.boundary = \"all\" (with contact.gap = \"normal\")");
+}
+
 void check_structure_mesh(const Case& c, const Mesh& mesh) {
-  const std::string what = c.structure.mesh.empty() ? "the generated structure mesh" : "structure.mesh " + c.structure.mesh;
-  if (!c.structure.mesh.empty()) {
-    check_extent(c, mesh);
+  const auto& s = c.structure;
+  const std::string what = s.rectangle() ? "the generated structure mesh" : "structure." + s.shape + " " + s.file();
+  if (!s.rectangle()) {
+    if (s.extent_given) check_extent(c, mesh);
     check_labelled(c, mesh, what);
+    check_file_structure(c, mesh, what);
   }
   if (c.contact.gap == "paper") check_contact_zone(c, mesh, what);  // ψ's span; "normal" needs none
   check_clamped(c, mesh, what);

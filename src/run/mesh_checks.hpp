@@ -14,14 +14,17 @@ namespace fsi {
 
 // A user's mesh file given by `key` ("structure.mesh", "fluid.mesh"): read with its
 // boundary curves and domain surface; a bad file, or one over `max_triangles`, is an
-// InputError naming the case file and the key.
+// InputError naming the case file and the key. `optional_curves` become labels, empty
+// if the file has none.
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
-                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles);
+                    const std::vector<std::string>& curves, const std::string& surface, double max_triangles,
+                    const std::vector<std::string>& optional_curves = {});
 
 // The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
 // vertex strictly inside it (else no contact row exists), every part joined to Γ_D
 // (else A_S is singular), no vertex inside the disk, every boundary edge labelled,
-// inside the fluid box (FSI); a mesh file's extent must equal structure.L × structure.H.
+// inside the fluid box (FSI); a file's (mesh or script) extent must equal structure.L ×
+// structure.H from (0, 0) if either is given, and its loads strain it little.
 void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,

@@ -81,7 +81,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   j["qp_status"] = solution.qp.status;
   j["max_displacement"] = max_u;
   j["min_displacement_y"] = u2.minCoeff();
-  j["tip_displacement"] = point_json(displacement_at(s.mesh(), solution.u, tip_of(c)));
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), solution.u);
   j["contact"] = to_json(contact);
   add_gap_summary(j["contact"], c, s, solution);
   j["contact"]["linearisations"] = s.gap->linearisations();

@@ -273,7 +273,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   j["fluid_velocity_l2_on_chi"] = norms.v_chi;
   j["max_displacement"] = max_u;
   j["min_displacement_y"] = u2.minCoeff();
-  j["tip_displacement"] = point_json(displacement_at(s.mesh(), u, tip_of(c)));
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), u);
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {

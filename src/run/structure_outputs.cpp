@@ -49,7 +49,7 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
 // The lowest point of the obstacles' tops the frame should show.
 double lowest_obstacle_top(const Case& c) {
   if (!c.obstacles_given) return c.obstacle.y0 + 0.3 * c.obstacle.r;
-  double y = 0;
+  double y = INFINITY;
   for (const ObstacleSpec& o : c.obstacles)
     y = std::min(y, o.shape == "disk" ? o.y0 + 0.3 * o.r : o.point.y() - 0.002);
   return y;
@@ -81,15 +81,15 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
   const Mesh def = displaced(ref, u1, u2);
   const Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
-  const auto& o = c.obstacle;
   // Frame: the structure before and after, and the top of the obstacle.
-  WorldBox box{0, c.structure.L, std::min(0.0, lowest_obstacle_top(c)), c.structure.H};
-  for (const Point& p : def.vertices) {
-    box.x_min = std::min(box.x_min, p.x());
-    box.x_max = std::max(box.x_max, p.x());
-    box.y_min = std::min(box.y_min, p.y());
-    box.y_max = std::max(box.y_max, p.y());
-  }
+  WorldBox box{INFINITY, -INFINITY, lowest_obstacle_top(c), -INFINITY};
+  for (const Mesh* m : {&ref, &def})
+    for (const Point& p : m->vertices) {
+      box.x_min = std::min(box.x_min, p.x());
+      box.x_max = std::max(box.x_max, p.x());
+      box.y_min = std::min(box.y_min, p.y());
+      box.y_max = std::max(box.y_max, p.y());
+    }
   const double pad = 0.06 * std::max(box.x_max - box.x_min, box.y_max - box.y_min);
   box = {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
   const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
@@ -119,9 +119,10 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   for (const auto& loop : boundary_loops(ref)) fig.polyline(loop, kGrey, 1.2, true, true);
   for (const auto& loop : boundary_loops(def)) fig.polyline(loop, kDark, 1.0, true);
   // Γ_C on the reference outline, and the active part on the deformed one.
-  if (!c.obstacles_given) fig.polyline({Point(o.xc_min(), 0), Point(o.xc_max(), 0)}, kOrange, 3.0);
+  const std::vector<BoundaryEdge> gamma_c = ref.edges_on(ref.label("Gamma_C"));
+  for (const auto& e : gamma_c) fig.polyline({ref.vertices[e.v[0]], ref.vertices[e.v[1]]}, kOrange, 3.0);
   const std::vector<int> active = active_vertices(*s.solver, solution);
-  for (const auto& e : ref.edges_on(ref.label("Gamma_C"))) {
+  for (const auto& e : gamma_c) {
     const bool a0 = std::find(active.begin(), active.end(), e.v[0]) != active.end();
     const bool a1 = std::find(active.begin(), active.end(), e.v[1]) != active.end();
     if (a0 && a1) fig.polyline({def.vertices[e.v[0]], def.vertices[e.v[1]]}, kRed, 4.0);

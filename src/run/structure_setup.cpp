@@ -18,7 +18,7 @@ std::unique_ptr<QpSolver> make_qp_solver(const std::string& name) {
 Mesh build_structure_mesh(const Case& c) {
   const auto& s = c.structure;
   const auto& o = c.obstacle;
-  if (s.mesh.empty()) {
+  if (s.rectangle()) {
     try {
       // With [[obstacles]] Gamma_C is only a label (contact.boundary = "all"): the
       // bottom's middle third.
@@ -28,8 +28,17 @@ Mesh build_structure_mesh(const Case& c) {
       throw SolverFailure(std::string("meshing the structure failed: ") + e.what());
     }
   }
-  return read_case_mesh(c, "structure.mesh", s.mesh, {"Gamma_D", "Gamma_C", "Gamma_N"}, "Omega_S",
-                        case_limits().structure_triangles);
+  // SPEC §9: Gamma_D and Gamma_N required, Gamma_C optional (the candidate edges of
+  // contact.boundary = "all" need none); a mesh file of §8 has all three.
+  const double limit = case_limits().structure_triangles;
+  if (s.shape == "geo") {
+    try {
+      return mesh_geo_script(s.geo, s.h, limit, {"Gamma_D", "Gamma_N"}, {"Gamma_C"}, "Omega_S");
+    } catch (const MeshError& e) {  // the script is the user's: its failure is an input error
+      throw InputError(c.source + ": structure.geo: " + e.what());
+    }
+  }
+  return read_case_mesh(c, "structure.mesh", s.mesh, {"Gamma_D", "Gamma_N"}, "Omega_S", limit, {"Gamma_C"});
 }
 
 Mesh make_structure_mesh(const Case& c) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
+#include "run/probes.hpp"
 
 namespace fsi {
 
@@ -13,8 +14,8 @@ Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
 }  // namespace
 
 Json to_json(const StructureParams& s) {
-  return {{"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)}, {"h_N", vec(s.h_N)},
-          {"h", s.h}, {"mesh", s.mesh}};
+  return {{"shape", s.shape}, {"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)},
+          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}};
 }
 
 Json to_json(const ObstacleParams& o) {
@@ -94,7 +95,15 @@ Json timing_json(const PhaseTimes& times, double total) {
 
 Json point_json(const Point& p) { return Json::array({p.x(), p.y()}); }
 
-Point tip_of(const Case& c) { return Point(c.structure.L, c.structure.H / 2); }
+std::optional<Point> tip_of(const Case& c) {
+  if (!c.structure.rectangle() && !c.structure.extent_given) return std::nullopt;
+  return Point(c.structure.L, c.structure.H / 2);
+}
+
+Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u) {
+  const std::optional<Point> tip = tip_of(c);
+  return tip ? point_json(displacement_at(reference, u, *tip)) : Json(nullptr);
+}
 
 double max_displacement(const Eigen::VectorXd& u) {
   const Eigen::Index nv = u.size() / 2;

@@ -3,6 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 #include "qp/qp_problem.hpp"
@@ -35,8 +37,11 @@ void write_json(const std::string& path, const Json& j);
 // [x, y] as a JSON array.
 Json point_json(const Point& p);
 // The structure's tip: the middle of its free end, (L, H/2) in the reference
-// configuration (summary.json's tip_displacement).
-Point tip_of(const Case& c);
+// configuration (summary.json's tip_displacement); none for a structure from a file
+// or script without structure.L and H (its "free end" is not known).
+std::optional<Point> tip_of(const Case& c);
+// u at the tip, [x, y], or null without one.
+Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u);
 
 // max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
 double max_displacement(const Eigen::VectorXd& u);

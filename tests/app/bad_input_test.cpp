@@ -64,6 +64,28 @@ std::string floating_block_msh() {
   return testing::msh22(m);
 }
 
+// A structure from a .geo script (SPEC §9) resting on a floor, and its script.
+const std::string kGeo = R"(name = "t"
+[structure]
+geo = "s.geo"
+E = 3.0e5
+nu = 0.3
+f = [0.0, -1.0e4]
+h = 0.01
+[contact]
+gap = "normal"
+boundary = "all"
+[[obstacles]]
+shape = "half-plane"
+point = [0.0, -0.001]
+normal = [0.0, 1.0]
+)";
+const std::string kBar = R"(Point(1) = {0, 0, 0}; Point(2) = {0.1, 0, 0}; Point(3) = {0.1, 0.02, 0}; Point(4) = {0, 0.02, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Physical Surface("Omega_S") = {1}; Physical Curve("Gamma_D") = {4}; Physical Curve("Gamma_N") = {1, 2, 3};
+)";
+
 // The §7.2 case on the shipped fluid mesh (hF = 0.02), copied as box.msh.
 const std::string kBoxCase = "[structure]\nh = 0.03\n[fluid]\nmesh = \"box.msh\"\n";
 
@@ -186,6 +208,25 @@ std::vector<BadInput> bad_inputs() {
       {"mesh_is_a_script", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "", {"structure.mesh", "not a Gmsh mesh file"}, {{"m.msh", "SystemCall \"touch pwned\";\n"}}},
       {"mesh_is_a_case_file", replace(kValid, "h = 0.0014", "mesh = \"case.toml\""), "", {"structure.mesh", "case.toml"}},
       {"structure_mesh_with_a_floating_part", replace(replace(kValid, "h = 0.0014", "mesh = \"floating.msh\""), "x0 = 0.055", "x0 = 0.015"), "", {"structure.mesh floating.msh", "not connected to Gamma_D"}, {{"floating.msh", floating_block_msh()}}},
+      // structure.shape and .geo scripts (issue 13).
+      {"shape_unknown", kValid, "--set structure.shape=circle", {"structure.shape", "\"rectangle\", \"mesh\", \"geo\""}},
+      {"shape_mesh_without_a_file", kValid, "--set structure.shape=mesh", {"structure.shape = \"mesh\"", "needs the file structure.mesh"}},
+      {"shape_rectangle_with_a_mesh", replace(kValid, "h = 0.0014", "mesh = \"m.msh\""), "--set structure.shape=rectangle", {"structure.shape = \"rectangle\"", "structure.mesh is given"}},
+      {"geo_and_mesh", kGeo, "--set structure.mesh=m.msh", {"structure.geo", "structure.mesh", "both"}},
+      {"geo_missing", kGeo, "--set structure.geo=none.geo", {"structure.geo", "none.geo", "no such script file"}},
+      {"geo_not_named_geo", kGeo, "--set structure.geo=case.toml", {"structure.geo", "extension .geo"}},
+      {"geo_runs_a_program", kGeo, "", {"structure.geo", "s.geo:1: the command 'System'", "allowed: geometry"}, {{"s.geo", "System \"touch pwned\";\n" + kBar}}},
+      {"geo_writes_a_file", kGeo, "", {"structure.geo", "s.geo:5: the command 'Printf'", "into a file"}, {{"s.geo", kBar + "Printf(\"%g\", 1) > \"leak.txt\";\n"}}},
+      {"geo_saves_a_mesh", kGeo, "", {"structure.geo", "'Save'"}, {{"s.geo", kBar + "Mesh 2;\nSave \"x.msh\";\n"}}},
+      {"geo_syntax_error", kGeo, "", {"structure.geo", "s.geo', line 2", "syntax error"}, {{"s.geo", "Point(1) = {0, 0, 0};\nPoint(2) = {1, 0 0};\n"}}},
+      {"geo_no_surface", kGeo, "", {"structure.geo", "defines no surface"}, {{"s.geo", "Point(1) = {0, 0, 0};\n"}}},
+      {"geo_too_fine", kGeo, "--set structure.h=1e-5", {"structure.geo", "above the limit"}, {{"s.geo", kBar}}},
+      {"geo_without_gamma_d", kGeo, "", {"structure.geo", "Gamma_D"}, {{"s.geo", replace(kBar, "Physical Curve(\"Gamma_D\") = {4};", "")}}},
+      {"geo_unlabelled_edge", kGeo, "", {"structure.geo", "belongs to no boundary part"}, {{"s.geo", replace(kBar, "{1, 2, 3};", "{1, 2};")}}},
+      {"geo_without_gamma_c_for_gamma_c", kGeo, "--set contact.boundary=Gamma_C", {"structure.geo", "no physical curve Gamma_C", "contact.boundary"}, {{"s.geo", kBar}}},
+      {"geo_extent_contradicts_L", kGeo, "--set structure.L=0.2", {"structure.L = 0.2 contradicts structure.geo", "x = 0.1"}, {{"s.geo", kBar}}},
+      {"geo_starts_inside_the_floor", replace(kGeo, "point = [0.0, -0.001]", "point = [0.0, 0.01]"), "", {"structure.geo s.geo", "inside an obstacle"}, {{"s.geo", kBar}}},
+      {"geo_too_soft", kGeo, "--set structure.E=1e-20", {"structure.geo", "strain", "<= 1e+06"}, {{"s.geo", kBar}}},
       {"structure_mesh_longer_than_L", replace(replace(kValid, "h = 0.0014", "mesh = \"beam.msh\""), "L = 0.06", "L = 0.07"), "", {"structure.L = 0.07 contradicts structure.mesh", "0.06"}, {{"beam.msh", shipped("paper-7.1-beam.msh")}}},
   };
 }

@@ -17,7 +17,7 @@ namespace {
 // A valid value different from the §7.2 default, for each key: numbers 1% larger.
 std::string other_value(const std::string& key) {
   static const std::map<std::string, std::string> special = {
-      {"name", "other"},          {"structure.mesh", "m.msh"},       {"structure.f", "[1, -2]"},
+      {"name", "other"},          {"structure.mesh", "m.msh"},       {"structure.geo", "s.geo"},       {"structure.f", "[1, -2]"},
       {"structure.h_N", "[1, 2]"}, {"fluid.mesh", "b.msh"},          {"fluid.f", "[1, -2]"},
       {"fluid.chi", "area-fraction"}, {"fluid.factorization", "whole"}, {"coupling.max_iterations", "7"},
       {"coupling.scheme", "aitken"},  {"contact.solver", "ipopt"},    {"output.dir", "elsewhere"},
@@ -50,6 +50,7 @@ TEST(SetupKeys, EveryCaseKeyIsInTheParameters) {
   EXPECT_GE(keys.size(), 30u);
   for (const std::string& key : keys) {
     if (key == "name" || key == "output.dir") continue;  // a name renames; a dir moves
+    if (key == "structure.shape") continue;  // follows structure.mesh and .geo: it cannot change alone
     const Case base = load_case("", companions(key)), c = changed(key);
     EXPECT_NE(to_json(c).dump(), to_json(base).dump()) << key << " is missing from summary.json's parameters";
   }
@@ -59,6 +60,7 @@ TEST(SetupKeys, EverySectionKeyAChangesItsSetupKey) {
   for (const std::string& key : case_keys()) {
     const std::string section = key.substr(0, key.find('.'));
     if (section == "coupling" || section == "output" || section == "name") continue;  // set per row, or no setup
+    if (key == "structure.shape") continue;  // follows structure.mesh and .geo
     const Case base = load_case("", companions(key)), c = changed(key);
     if (section == "fluid" || section == "obstacle") {
       EXPECT_NE(fluid_setup_key(c), fluid_setup_key(base)) << key;
