@@ -330,6 +330,11 @@ std::string to_toml(const Case& c) {
       if (b.shape == "disk") e.insert("x0", b.x0), e.insert("y0", b.y0), e.insert("r", b.r);
       if (b.shape == "half-plane")
         e.insert("point", toml::array{b.point.x(), b.point.y()}), e.insert("normal", toml::array{b.normal.x(), b.normal.y()});
+      if (b.shape == "polygon") {
+        toml::array points;
+        for (const Point& p : b.points) points.push_back(toml::array{p.x(), p.y()});
+        e.insert("points", points);
+      }
       list.push_back(e);
     }
     t.insert("obstacles", list);

@@ -37,8 +37,9 @@ struct ObstacleParams {
 
 // One rigid obstacle of [[obstacles]] (SPEC §9).
 struct ObstacleSpec {
-  std::string shape;                       // "disk" | "half-plane" (polygons: not yet)
+  std::string shape;                       // "disk" | "polygon" | "half-plane"
   double x0 = 0, y0 = 0, r = 0;            // disk
+  std::vector<Point> points;               // polygon: its corners, either orientation
   Point point = Point::Zero();             // half-plane: a point on its boundary
   Point normal = Point::Zero();            // and its outward normal (unit)
 };

@@ -1,4 +1,5 @@
-// [[obstacles]] (SPEC §9): disks and half-planes, any number (polygons: not yet).
+// [[obstacles]] (SPEC §9): disks, polygons and half-planes, any number.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -7,15 +8,62 @@
 namespace fsi::case_detail {
 namespace {
 
+constexpr std::size_t kMaxPolygonPoints = 2000;  // the simplicity check is quadratic: 2e6 pairs
+
+bool segments_cross(const Point& a, const Point& b, const Point& c, const Point& d) {
+  auto side = [](const Point& p, const Point& q, const Point& r) {
+    const double s = (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+    return (s > 0) - (s < 0);
+  };
+  const int s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+  if (s1 != s2 && s3 != s4) return true;
+  auto within = [](const Point& p, const Point& q, const Point& r) {  // r on segment pq, given collinear
+    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
+           r.y() <= std::max(p.y(), q.y());
+  };
+  return (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) || (s3 == 0 && within(c, d, a)) ||
+         (s4 == 0 && within(c, d, b));
+}
+
+// points = [[x, y], ...]: at least three, finite, a simple polygon (no two edges meet
+// but neighbours at their shared corner) with an area.
+std::vector<Point> read_polygon(Section& s, const std::string& name, const Origin& origin) {
+  const std::string key = name + ".points", allowed = "points = [[x, y], ...], at least 3 corners of a simple polygon";
+  const toml::array* a = s.array("points");
+  if (!a) fail(origin, key, "is missing or not an array", allowed);
+  if (a->size() < 3 || a->size() > kMaxPolygonPoints)
+    fail(origin, key, "has " + std::to_string(a->size()) + " corners", "3 to " + std::to_string(kMaxPolygonPoints));
+  std::vector<Point> p;
+  for (const toml::node& n : *a) {
+    const toml::array* xy = n.as_array();
+    if (!xy || xy->size() != 2 || !(*xy)[0].is_number() || !(*xy)[1].is_number())
+      fail(origin, key, "has an entry that is not [x, y]", allowed);
+    const Point q(as_double((*xy)[0]), as_double((*xy)[1]));
+    if (!kSigned.contains(q.x()) || !kSigned.contains(q.y())) fail(origin, key, "has a corner out of range", kSigned.text());
+    p.push_back(q);
+  }
+  const std::size_t m = p.size();
+  double area = 0;
+  for (std::size_t i = 0; i < m; ++i) area += p[i].x() * p[(i + 1) % m].y() - p[i].y() * p[(i + 1) % m].x();
+  if (!(std::abs(area) > 0)) fail(origin, key, "encloses no area", allowed);
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j) {
+      const bool neighbours = j == i + 1 || (i == 0 && j == m - 1);
+      if (neighbours ? p[i] == p[(i + 1) % m] || p[j] == p[(j + 1) % m]
+                     : segments_cross(p[i], p[(i + 1) % m], p[j], p[(j + 1) % m]))
+        fail(origin, key, "is not a simple polygon (its edges " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                              " meet or a corner repeats)", allowed);
+    }
+  return p;
+}
+
 ObstacleSpec read_one(const toml::table* t, const std::string& name, const Origin& origin) {
   Section s(t, name, origin, nullptr);
   ObstacleSpec o;
-  o.shape = s.text("shape", "");
-  if (o.shape == "polygon")  // solid/relinearised_contact.hpp: the iteration cycles at corners
-    fail(origin, name + ".shape", "= \"polygon\" is not available yet (the re-linearisation does not settle at its corners)",
-         "\"disk\", \"half-plane\"");
-  o.shape = s.choice("shape", "", {"disk", "half-plane"});
-  if (o.shape == "disk") {
+  o.shape = s.choice("shape", "", {"disk", "polygon", "half-plane"});
+  if (o.shape == "polygon") {
+    o.points = read_polygon(s, name, origin);
+  } else if (o.shape == "disk") {
     o.x0 = s.number("x0", NAN, kSigned);
     o.y0 = s.number("y0", NAN, kSigned);
     o.r = s.number("r", NAN, kSize);

@@ -103,6 +103,11 @@ class Section {
     if (!(b[0] < b[2] && b[1] < b[3])) fail(origin_, full(key), "is an empty box", allowed);
     box = b;
   }
+  // The array under `key` (null if absent or not an array), read.
+  const toml::array* array(const std::string& key) {
+    const toml::node* n = find(key);
+    return n ? n->as_array() : nullptr;
+  }
   // Whether the section sets `key` (without reading it).
   bool has(const std::string& key) const { return table_ && table_->contains(key); }
   void reject_unknown() const {

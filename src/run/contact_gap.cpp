@@ -5,8 +5,9 @@
 namespace fsi {
 namespace {
 
-std::unique_ptr<Obstacle> make_obstacle(const ObstacleSpec& o) {
+std::unique_ptr<Obstacle> make_obstacle(const ObstacleSpec& o, double diam) {
   if (o.shape == "disk") return std::make_unique<DiskObstacle>(Point(o.x0, o.y0), o.r);
+  if (o.shape == "polygon") return std::make_unique<PolygonObstacle>(o.points, kPolygonMargin * diam);
   return std::make_unique<HalfPlaneObstacle>(o.point, o.normal);
 }
 
@@ -14,7 +15,7 @@ std::unique_ptr<Obstacle> make_obstacle(const ObstacleSpec& o) {
 
 ContactGap::ContactGap(const Case& c, const Mesh& mesh) : normal_(c.contact.gap == "normal") {
   if (c.obstacles_given) {
-    for (const ObstacleSpec& o : c.obstacles) owned_.push_back(make_obstacle(o));
+    for (const ObstacleSpec& o : c.obstacles) owned_.push_back(make_obstacle(o, diameter(mesh)));
   } else {
     owned_.push_back(std::make_unique<DiskObstacle>(Point(c.obstacle.x0, c.obstacle.y0), c.obstacle.r));
   }

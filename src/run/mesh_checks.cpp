@@ -109,7 +109,8 @@ void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what
   if (c.obstacles_given) {  // [[obstacles]]: every vertex outside every obstacle
     const ContactGap gap(c, mesh);
     const double d = gap.min_gap(mesh, Eigen::VectorXd::Zero(2 * mesh.num_vertices()), /*all_vertices=*/true);
-    if (d < 0)
+    // Within kPolygonMargin · diam counts as touching, not inside: a polygon is grown by it.
+    if (d < -kPolygonMargin * diameter(mesh) * (1 + 1e-9))
       throw InputError(c.source + ": " + what + ": the structure starts inside an obstacle of [[obstacles]] (by " +
                        shortest(-d) + " m); allowed: every vertex outside every obstacle");
     return;

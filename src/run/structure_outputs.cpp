@@ -42,7 +42,9 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
   if (!c.obstacles_given) return {disk_polygon(c.obstacle.x0, c.obstacle.y0, c.obstacle.r)};
   std::vector<std::vector<Point>> out;
   for (const ObstacleSpec& o : c.obstacles)
-    out.push_back(o.shape == "disk" ? disk_polygon(o.x0, o.y0, o.r) : half_plane_polygon(o.point, o.normal, box));
+    out.push_back(o.shape == "disk"      ? disk_polygon(o.x0, o.y0, o.r)
+                  : o.shape == "polygon" ? o.points
+                                         : half_plane_polygon(o.point, o.normal, box));
   return out;
 }
 
@@ -50,8 +52,15 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
 double lowest_obstacle_top(const Case& c) {
   if (!c.obstacles_given) return c.obstacle.y0 + 0.3 * c.obstacle.r;
   double y = INFINITY;
-  for (const ObstacleSpec& o : c.obstacles)
-    y = std::min(y, o.shape == "disk" ? o.y0 + 0.3 * o.r : o.point.y() - 0.002);
+  for (const ObstacleSpec& o : c.obstacles) {
+    if (o.shape == "polygon") {  // its top third
+      double lo = INFINITY, hi = -INFINITY;
+      for (const Point& p : o.points) lo = std::min(lo, p.y()), hi = std::max(hi, p.y());
+      y = std::min(y, hi - (hi - lo) / 3);
+    } else {
+      y = std::min(y, o.shape == "disk" ? o.y0 + 0.3 * o.r : o.point.y() - 0.002);
+    }
+  }
   return y;
 }
 

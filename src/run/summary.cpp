@@ -49,6 +49,10 @@ Json to_json(const Case& c) {
       Json e = {{"shape", o.shape}};
       if (o.shape == "disk") e["x0"] = o.x0, e["y0"] = o.y0, e["r"] = o.r;
       if (o.shape == "half-plane") e["point"] = {o.point.x(), o.point.y()}, e["normal"] = {o.normal.x(), o.normal.y()};
+      if (o.shape == "polygon") {
+        e["points"] = Json::array();
+        for (const Point& p : o.points) e["points"].push_back({p.x(), p.y()});
+      }
       list.push_back(e);
     }
     j["obstacles"] = list;

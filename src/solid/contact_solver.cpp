@@ -142,7 +142,9 @@ ContactSummary summarize_contact(const ElasticContactSolver& solver, const Conta
   for (std::size_t i = 0; i < rows.size() && i < static_cast<std::size_t>(s.qp.alpha.size()); ++i)
     lambda[static_cast<std::size_t>(rows[i])] = std::max(s.qp.alpha[static_cast<Eigen::Index>(i)], 0.0);
   double moment = 0;
-  for (const BoundaryEdge& e : mesh.edges_on(solver.gamma_c_label())) {
+  // Over every boundary edge: λ vanishes off the rows' vertices, so this is Γ_C's
+  // integral for contact.boundary = "Gamma_C", term for term, and the candidates' for "all".
+  for (const BoundaryEdge& e : mesh.boundary_edges) {
     const Point &A = mesh.vertices[e.v[0]], &B = mesh.vertices[e.v[1]];
     const double la = lambda[e.v[0]], lb = lambda[e.v[1]], l = (B - A).norm();
     out.pressure_resultant += l * (la + lb) / 2;  // exact: P1 λ, linear X1 on an edge

@@ -72,8 +72,8 @@ struct ContactSummary {
   int active_nodes = 0;
   double x_min = 0, x_max = 0;  // reference X1 extent of the active vertices (if any)
   double max_multiplier = 0;    // largest α: peak discrete contact pressure
-  // The contact pressure λ = Σ α_i φ_i on Γ_C (the multipliers of eq. 21's rows are
-  // its nodal values), integrated exactly on Γ_C's edges: its resultant ∫ λ ds (N/m)
+  // The contact pressure λ = Σ α_i φ_i on the candidate boundary (the multipliers of
+  // eq. 21's rows are its nodal values), integrated exactly on its edges: ∫ λ ds (N/m)
   // and the reference X1 of its centroid ∫ λ X1 ds / ∫ λ ds. Unlike x_min, x_max,
   // which jump from vertex to vertex, the centroid moves continuously with the mesh:
   // the contact point a refinement study can converge.

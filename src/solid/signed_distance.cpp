@@ -14,7 +14,7 @@ SignedDistance DiskObstacle::at(const Point& x) const {
   return s;
 }
 
-PolygonObstacle::PolygonObstacle(std::vector<Point> points) : p_(std::move(points)) {
+PolygonObstacle::PolygonObstacle(std::vector<Point> points, double margin) : p_(std::move(points)), margin_(margin) {
   double area = 0;
   for (std::size_t i = 0; i < p_.size(); ++i) {
     const Point &a = p_[i], &b = p_[(i + 1) % p_.size()];
@@ -33,35 +33,38 @@ bool PolygonObstacle::inside(const Point& x) const {
   return in;
 }
 
-SignedDistance PolygonObstacle::at(const Point& x) const {
-  const std::size_t n = p_.size();
-  auto outward = [&](std::size_t i) {  // edge i → i+1: right of it if counter-clockwise
-    const Point e = p_[(i + 1) % n] - p_[i];
-    return Point(ccw_ ? Point(e.y(), -e.x()) : Point(-e.y(), e.x())).normalized();
-  };
-  double best = INFINITY;
-  Point closest = p_[0], edge_normal(0, 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point &a = p_[i], &b = p_[(i + 1) % n];
-    const Point e = b - a;
+Point PolygonObstacle::outward(std::size_t i) const {  // edge i → i+1: right of it if counter-clockwise
+  const Point e = p_[(i + 1) % p_.size()] - p_[i];
+  return Point(ccw_ ? Point(e.y(), -e.x()) : Point(-e.y(), e.x())).normalized();
+}
+
+PolygonObstacle::Nearest PolygonObstacle::nearest_point(const Point& x) const {
+  Nearest best;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    const Point &a = p_[i], e = p_[(i + 1) % p_.size()] - a;
     const double t = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
     const Point q = a + t * e;
     const double dist = (x - q).norm();
-    if (dist < best) {
-      best = dist, closest = q;
-      // On a corner the normal is not defined: the bisector of its two edges' (a
-      // structure vertex resting on the corner would otherwise take one edge's normal
-      // or the other's from one linearisation to the next, and never settle).
-      if (t == 0) edge_normal = (outward(i) + outward((i + n - 1) % n)).normalized();
-      else if (t == 1) edge_normal = (outward(i) + outward((i + 1) % n)).normalized();
-      else edge_normal = outward(i);
-    }
+    if (dist < best.distance) best = {dist, q, i, t};
   }
+  return best;
+}
+
+SignedDistance PolygonObstacle::at(const Point& x) const {
+  const std::size_t n = p_.size();
+  const Nearest q = nearest_point(x);
   SignedDistance s;
   const bool in = inside(x);
-  s.d = in ? -best : best;
-  if (best > 0) s.n = in ? Point((closest - x) / best) : Point((x - closest) / best);
-  else s.n = edge_normal;
+  s.d = (in ? -q.distance : q.distance) - margin_;
+  if (q.distance > 0) {
+    s.n = in ? Point((q.point - x) / q.distance) : Point((x - q.point) / q.distance);
+  } else if (q.t == 0 || q.t == 1) {
+    // On a corner the normal is not defined: the bisector of its two edges'.
+    const std::size_t other = q.t == 0 ? (q.edge + n - 1) % n : (q.edge + 1) % n;
+    s.n = (outward(q.edge) + outward(other)).normalized();
+  } else {
+    s.n = outward(q.edge);
+  }
   return s;
 }
 

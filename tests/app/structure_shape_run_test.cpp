@@ -73,5 +73,20 @@ TEST(StructureShapeRun, AMeshNeedsNoLengthAndHeight) {
   fs::remove_all(dir);
 }
 
+// The documented examples of issue 13 run, touch what they say they touch and draw it.
+TEST(StructureShapeRun, TheContactExamplesRun) {
+  const fs::path dir = testing::scratch_dir("shape-examples");
+  for (const char* name : {"block-on-a-wedge", "capsule-against-a-wall", "beam-on-two-disks"}) {
+    const testing::CliRun r = testing::run_cli("run " + kSource + "/cases/" + name + ".toml -q --out " + name, dir);
+    ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+    const auto j = nlohmann::json::parse(testing::slurp(dir / name / "summary.json"));
+    for (const auto& o : j["contact"]["obstacles"]) EXPECT_GT(o["active_nodes"].get<int>(), 0) << name;
+    EXPECT_GE(j["contact"]["min_gap"].get<double>(), -1e-12) << name;
+    EXPECT_GT(j["contact"]["pressure_resultant"].get<double>(), 0) << name;
+    EXPECT_TRUE(fs::exists(dir / name / "structure.png")) << name;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsi

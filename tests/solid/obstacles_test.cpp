@@ -1,10 +1,12 @@
 // [[obstacles]] with contact.gap = "normal" (SPEC §9): signed distances of polygons and
-// half-planes against closed forms (polygons are not accepted in a case yet), and a beam resting on several obstacles at once.
+// half-planes against closed forms, a beam resting on several obstacles at once, on a
+// block's corner and on a wedge's tip.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "io/case.hpp"
+#include "run/contact_gap.hpp"
 #include "run/structure_setup.hpp"
 #include "solid/relinearised_contact.hpp"
 #include "solid/signed_distance.hpp"
@@ -14,7 +16,7 @@ namespace {
 
 TEST(SignedDistance, PolygonInsideOutsideEdgeAndCorner) {
   // The unit square, clockwise: the orientation must not matter.
-  const PolygonObstacle square({{0, 0}, {0, 1}, {1, 1}, {1, 0}});
+  const PolygonObstacle square({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 0.0);
   const SignedDistance above = square.at(Point(0.5, 1.25));
   EXPECT_NEAR(above.d, 0.25, 1e-15);
   EXPECT_NEAR(above.n.y(), 1.0, 1e-15);
@@ -87,6 +89,54 @@ TEST(Obstacles, ABeamRestsOnTwoDisksAtOnce) {
   const Rested ipopt = rest_on(kTwoDisks, "ipopt");
   const double scale = r.solution.u.cwiseAbs().maxCoeff();
   EXPECT_LT((r.solution.u - ipopt.solution.u).cwiseAbs().maxCoeff(), 1e-8 * scale);
+}
+
+// A polygon's distance less its margin: its corners become arcs of that radius.
+TEST(SignedDistance, APolygonsMarginRoundsItsCorners) {
+  const PolygonObstacle square({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.01);
+  EXPECT_NEAR(square.at(Point(0.5, 1.25)).d, 0.24, 1e-15);
+  const Point beyond(1 + 0.01 / std::sqrt(2.0), 1 + 0.01 / std::sqrt(2.0));  // on the corner's arc
+  EXPECT_NEAR(square.at(beyond).d, 0.0, 1e-15);
+  EXPECT_NEAR(square.at(beyond).n.x(), 1 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(square.at(Point(1.0, 0.5)).d, -0.01, 1e-15);  // on the edge: inside the margin
+}
+
+// The beam onto a block's corner (it bends over it) and onto a wedge's tip: the
+// passes used to cycle at the corner (solid/signed_distance.hpp); with the margin they
+// settle in a few, with the exact gap, the KKT conditions and both QP solvers agreeing.
+void expect_settled_polygon_contact(const std::string& points, int max_passes) {
+  const std::string obstacle = "[[obstacles]]\nshape = \"polygon\"\npoints = " + points + "\n";
+  const Rested r = rest_on(obstacle);
+  const double diam = diameter(r.s.mesh());
+  EXPECT_LE(r.s.gap->linearisations(), max_passes);
+  EXPECT_GE(r.s.gap->min_gap(r.s.mesh(), r.solution.u), -1e-10 * diam);
+  const auto per = r.s.gap->per_obstacle(*r.s.solver, r.solution);
+  ASSERT_EQ(per.size(), 1u);
+  EXPECT_GT(per[0].active_nodes, 0);
+  EXPECT_GT(per[0].force.y(), 0.0);
+  EXPECT_GE(r.solution.qp.alpha.minCoeff(), 0.0);
+  EXPECT_LT(r.solution.qp.kkt.max(), 1e-12);
+  const Rested ipopt = rest_on(obstacle, "ipopt");
+  const double scale = r.solution.u.cwiseAbs().maxCoeff();
+  EXPECT_LT((r.solution.u - ipopt.solution.u).cwiseAbs().maxCoeff(), 1e-8 * scale);
+}
+
+TEST(Obstacles, ABeamBendsOverABlocksCorner) {
+  expect_settled_polygon_contact("[[0.02, -0.02], [0.04, -0.02], [0.04, -0.004], [0.02, -0.004]]", 4);  // measured 3
+}
+
+TEST(Obstacles, ABeamRestsOnAWedgesTip) {
+  expect_settled_polygon_contact("[[0.035, -0.03], [0.055, -0.03], [0.045, -0.005]]", 4);  // measured 3
+}
+
+// A polygon flat side and a half-plane along it hold the beam alike: the margin, 1e-7
+// diam, is all that differs.
+TEST(Obstacles, APolygonsFlatSideActsAsAHalfPlane) {
+  const Rested poly = rest_on("[[obstacles]]\nshape = \"polygon\"\npoints = [[-1, -0.003], [1, -0.003], [1, -1], [-1, -1]]\n");
+  const Rested plane = rest_on("[[obstacles]]\nshape = \"half-plane\"\npoint = [0.0, -0.003]\nnormal = [0.0, 1.0]\n");
+  const double diam = diameter(plane.s.mesh());
+  EXPECT_LT((poly.solution.u - plane.solution.u).cwiseAbs().maxCoeff(), 2 * kPolygonMargin * diam);
+  EXPECT_GT((poly.solution.u - plane.solution.u).cwiseAbs().maxCoeff(), 0.1 * kPolygonMargin * diam);
 }
 
 // No obstacle at all (obstacles = []): no contact row, the beam hangs free.
