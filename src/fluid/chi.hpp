@@ -11,7 +11,7 @@
 
 #include "mesh/clipping.hpp"  // triangle_intersection_area
 #include "mesh/mesh.hpp"
-#include "mesh/point_locator.hpp"
+#include "fem/point_locator.hpp"
 
 namespace fsi {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "fluid/penalised_stokes.hpp"
-#include "mesh/point_locator.hpp"
+#include "fem/point_locator.hpp"
 
 namespace fsi {
 

@@ -1,6 +1,6 @@
 #include "run/probes.hpp"
 
-#include "mesh/point_locator.hpp"
+#include "fem/point_locator.hpp"
 
 namespace fsi {
 

@@ -6,7 +6,7 @@
 
 #include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
-#include "mesh/point_locator.hpp"
+#include "fem/point_locator.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi {

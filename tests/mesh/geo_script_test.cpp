@@ -91,7 +91,9 @@ TEST(GeoScript, TheScriptsChildCanWriteNoFileAndStartNoProcess) {
   ASSERT_EQ(reply.size(), 2u);
   EXPECT_EQ(reply[0], '-');
   EXPECT_EQ(std::filesystem::exists(file) ? std::filesystem::file_size(file) : 0u, 0u);
-  if (::geteuid() != 0) EXPECT_EQ(reply[1], '-');  // RLIMIT_NPROC does not bind root
+  if (::geteuid() != 0) {
+    EXPECT_EQ(reply[1], '-');  // RLIMIT_NPROC does not bind root
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -1,4 +1,4 @@
-#include "mesh/point_locator.hpp"
+#include "fem/point_locator.hpp"
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/box.hpp>
