@@ -1,7 +1,6 @@
 #include "coupling/force_transfer.hpp"
 
-#include "fem/p1.hpp"
-#include "fem/quadrature.hpp"
+#include "fem/integration.hpp"
 
 namespace fsi {
 
@@ -29,20 +28,15 @@ FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const Vec
 
 Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u) const {
   const int nv = mesh_.num_vertices();
-  const TriangleRule rule = triangle_rule(2);
   Eigen::VectorXd body = Eigen::VectorXd::Zero(2 * nv);
-  for (int tri = 0; tri < mesh_.num_triangles(); ++tri) {
-    const P1Triangle T(mesh_, tri);
+  integrate_on_triangles(mesh_, triangle_rule(2), [&](int tri, const P1Triangle&, const TrianglePoint& q) {
     const auto& v = mesh_.triangles[tri];
-    for (std::size_t q = 0; q < rule.w.size(); ++q) {
-      const Eigen::Vector3d& l = rule.lambda[q];
-      Point x = T.point(l);
-      for (int a = 0; a < 3; ++a) x += l[a] * Point(u[v[a]], u[nv + v[a]]);
-      const Point f = f_F_(x) * (rule.w[q] * T.area);
-      for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 2; ++c) body[dof(v[a], c, nv)] -= f[c] * l[a];
-    }
-  }
+    Point x = q.x;  // the point's deformed position
+    for (int a = 0; a < 3; ++a) x += q.lambda[a] * Point(u[v[a]], u[nv + v[a]]);
+    const Point f = f_F_(x) * q.dx;
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 2; ++c) body[dof(v[a], c, nv)] -= f[c] * q.lambda[a];
+  });
   return body;
 }
 

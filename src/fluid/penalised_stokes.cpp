@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fem/quadrature.hpp"
+#include "fem/integration.hpp"
 #include "common/errors.hpp"
 #include "common/timer.hpp"
 
@@ -74,21 +74,15 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
 
   // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
   traction_load_ = Eigen::VectorXd::Zero(n);
-  const LineRule line = gauss_legendre(3);
   for (const auto& [label, h] : bc.tractions)
-    for (const auto& e : mesh.edges_on(label)) {
-      const Point& a = mesh.vertices[e.v[0]];
-      const Point& b = mesh.vertices[e.v[1]];
-      for (std::size_t k = 0; k < line.x.size(); ++k) {
-        const double s = line.x[k];
-        const Point hq = h((1 - s) * a + s * b) * (line.w[k] * (b - a).norm());
-        for (int c = 0; c < 2; ++c) {
-          const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
-          if (r0 >= 0) traction_load_[r0] += hq[c] * (1 - s);
-          if (r1 >= 0) traction_load_[r1] += hq[c] * s;
-        }
+    integrate_on_edges(mesh, mesh.edges_on(label), gauss_legendre(3), [&](const BoundaryEdge& e, const EdgePoint& q) {
+      const Point hq = h(q.x) * q.ds;
+      for (int c = 0; c < 2; ++c) {
+        const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
+        if (r0 >= 0) traction_load_[r0] += hq[c] * q.phi[0];
+        if (r1 >= 0) traction_load_[r1] += hq[c] * q.phi[1];
       }
-    }
+    });
 }
 
 void PenalisedStokes::build_whole_pattern() {

@@ -3,7 +3,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "fem/quadrature.hpp"
+#include "fem/integration.hpp"
 #include "solid/elasticity.hpp"
 
 namespace fsi {
@@ -26,30 +26,20 @@ ContactConstraint assemble_contact(const Mesh& mesh, int gamma_c_label, const Fo
   const int rows = static_cast<int>(out.row_vertex.size());
   out.c_lb = Eigen::VectorXd::Zero(rows);
   std::vector<Eigen::Triplet<double>> entries;
-  const LineRule rule = gauss_legendre(gauss_points);
-  for (const auto& e : edges) {
-    const Point& p = mesh.vertices[e.v[0]];
-    const Point& q = mesh.vertices[e.v[1]];
-    const double length = (q - p).norm();
-    for (std::size_t k = 0; k < rule.x.size(); ++k) {
-      const double s = rule.x[k];
-      const Point X = (1 - s) * p + s * q;
-      if (!psi.defined_at(X.x()))
-        throw std::domain_error("Gamma_C reaches beyond the obstacle's span");
-      const double ds = rule.w[k] * length;
-      const double phi[2] = {1 - s, s};
-      for (int a = 0; a < 2; ++a) {
-        auto row = row_of.find(e.v[a]);
-        if (row == row_of.end()) continue;
-        const double weight = phi[a] * ds;
-        out.c_lb[row->second] += (psi.psi(X.x()) - X.y()) * weight;
-        for (int b = 0; b < 2; ++b) {
-          entries.emplace_back(row->second, dof(e.v[b], 0, nv), -psi.dpsi(X.x()) * phi[b] * weight);
-          entries.emplace_back(row->second, dof(e.v[b], 1, nv), phi[b] * weight);
-        }
+  integrate_on_edges(mesh, edges, gauss_legendre(gauss_points), [&](const BoundaryEdge& e, const EdgePoint& q) {
+    const Point& X = q.x;
+    if (!psi.defined_at(X.x())) throw std::domain_error("Gamma_C reaches beyond the obstacle's span");
+    for (int a = 0; a < 2; ++a) {
+      auto row = row_of.find(e.v[a]);
+      if (row == row_of.end()) continue;
+      const double weight = q.phi[a] * q.ds;
+      out.c_lb[row->second] += (psi.psi(X.x()) - X.y()) * weight;
+      for (int b = 0; b < 2; ++b) {
+        entries.emplace_back(row->second, dof(e.v[b], 0, nv), -psi.dpsi(X.x()) * q.phi[b] * weight);
+        entries.emplace_back(row->second, dof(e.v[b], 1, nv), q.phi[b] * weight);
       }
     }
-  }
+  });
   out.C_S.resize(rows, 2 * nv);
   out.C_S.setFromTriplets(entries.begin(), entries.end());
   return out;

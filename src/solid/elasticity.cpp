@@ -2,8 +2,7 @@
 
 #include <vector>
 
-#include "fem/p1.hpp"
-#include "fem/quadrature.hpp"
+#include "fem/integration.hpp"
 
 namespace fsi {
 
@@ -15,8 +14,7 @@ SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
   const int nv = mesh.num_vertices();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(36 * mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const P1Triangle T(mesh, t);
+  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
     const auto& tri = mesh.triangles[t];
     // ε(φ_a e_c):ε(φ_b e_d) = ½(δ_cd ∇φ_a·∇φ_b + ∂_d φ_a ∂_c φ_b), div(φ_a e_c) = ∂_c φ_a.
     for (int a = 0; a < 3; ++a)
@@ -29,7 +27,7 @@ SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
             entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * k);
           }
       }
-  }
+  });
   SparseMatrix A(2 * nv, 2 * nv);
   A.setFromTriplets(entries.begin(), entries.end());
   return A;
@@ -39,15 +37,14 @@ SparseMatrix assemble_vector_mass(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(18 * mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const double area = mesh.area(t);
+  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)  // ∫ λ_a λ_b = |T|(1 + δ_ab)/12
         for (int c = 0; c < 2; ++c)
           entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], c, nv),
-                               area * (a == b ? 2.0 : 1.0) / 12.0);
-  }
+                               T.area * (a == b ? 2.0 : 1.0) / 12.0);
+  });
   SparseMatrix M(2 * nv, 2 * nv);
   M.setFromTriplets(entries.begin(), entries.end());
   return M;
@@ -57,14 +54,13 @@ SparseMatrix assemble_divergence(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(18 * mesh.triangles.size());
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const P1Triangle T(mesh, t);
+  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 2; ++c)
         for (int k = 0; k < 3; ++k)  // ∫ ∂_c λ_a λ_k = ∂_c λ_a |T|/3
           entries.emplace_back(dof(tri[a], c, nv), tri[k], T.grad(a, c) * T.area / 3.0);
-  }
+  });
   SparseMatrix B(2 * nv, nv);
   B.setFromTriplets(entries.begin(), entries.end());
   return B;
@@ -72,39 +68,27 @@ SparseMatrix assemble_divergence(const Mesh& mesh) {
 
 Eigen::VectorXd assemble_volume_load(const Mesh& mesh, const VectorField& f, int degree) {
   const int nv = mesh.num_vertices();
-  const TriangleRule rule = triangle_rule(degree);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const P1Triangle T(mesh, t);
+  integrate_on_triangles(mesh, triangle_rule(degree), [&](int t, const P1Triangle&, const TrianglePoint& q) {
     const auto& tri = mesh.triangles[t];
-    for (std::size_t q = 0; q < rule.w.size(); ++q) {
-      const Point fq = f(T.point(rule.lambda[q])) * (rule.w[q] * T.area);
-      for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 2; ++c) b[dof(tri[a], c, nv)] += fq[c] * rule.lambda[q][a];
-    }
-  }
+    const Point fq = f(q.x) * q.dx;
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 2; ++c) b[dof(tri[a], c, nv)] += fq[c] * q.lambda[a];
+  });
   return b;
 }
 
 Eigen::VectorXd assemble_surface_load(const Mesh& mesh, int label, const VectorField& h,
                                       int points) {
   const int nv = mesh.num_vertices();
-  const LineRule rule = gauss_legendre(points);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
-  for (const auto& e : mesh.boundary_edges) {
-    if (e.label != label) continue;
-    const Point& p = mesh.vertices[e.v[0]];
-    const Point& q = mesh.vertices[e.v[1]];
-    const double length = (q - p).norm();
-    for (std::size_t k = 0; k < rule.x.size(); ++k) {
-      const double s = rule.x[k];
-      const Point hq = h((1 - s) * p + s * q) * (rule.w[k] * length);
-      for (int c = 0; c < 2; ++c) {
-        b[dof(e.v[0], c, nv)] += hq[c] * (1 - s);
-        b[dof(e.v[1], c, nv)] += hq[c] * s;
-      }
+  integrate_on_edges(mesh, mesh.edges_on(label), gauss_legendre(points), [&](const BoundaryEdge& e, const EdgePoint& q) {
+    const Point hq = h(q.x) * q.ds;
+    for (int c = 0; c < 2; ++c) {
+      b[dof(e.v[0], c, nv)] += hq[c] * q.phi[0];
+      b[dof(e.v[1], c, nv)] += hq[c] * q.phi[1];
     }
-  }
+  });
   return b;
 }
 
