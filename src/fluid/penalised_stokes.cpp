@@ -74,8 +74,9 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
 
   // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
   traction_load_ = Eigen::VectorXd::Zero(n);
-  for (const auto& [label, h] : bc.tractions)
-    integrate_on_edges(mesh, mesh.edges_on(label), gauss_legendre(3), [&](const BoundaryEdge& e, const EdgePoint& q) {
+  for (const auto& traction : bc.tractions) {
+    const auto& h = traction.second;  // a structured binding: clang 14 cannot capture it
+    integrate_on_edges(mesh, mesh.edges_on(traction.first), gauss_legendre(3), [&](const BoundaryEdge& e, const EdgePoint& q) {
       const Point hq = h(q.x) * q.ds;
       for (int c = 0; c < 2; ++c) {
         const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
@@ -83,6 +84,7 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
         if (r1 >= 0) traction_load_[r1] += hq[c] * q.phi[1];
       }
     });
+  }
 }
 
 void PenalisedStokes::build_whole_pattern() {
