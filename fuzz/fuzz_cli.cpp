@@ -2,7 +2,7 @@
 // problems. An input is a little archive of sections:
 //   --- args        one argument per line ("run", "case.toml", "--set", "k=v", ...)
 //   --- case.toml   the files the arguments may name: case.toml, rows.csv,
-//   --- beam.msh    beam.msh, box.msh (nothing else is written)
+//   --- beam.msh    beam.msh, box.msh, s.geo (a structure script: nothing else is written)
 // Contract (SPEC §8, issue 11), checked after every input:
 //   - the exit status is 0, 1, 2 or 3 and no exception escapes;
 //   - status 2: nothing at all was created;
@@ -34,7 +34,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::set<std::string> kFiles = {"case.toml", "rows.csv", "beam.msh", "box.msh"};
+const std::set<std::string> kFiles = {"case.toml", "rows.csv", "beam.msh", "box.msh", "s.geo"};
 
 struct Input {
   std::vector<std::string> args;
