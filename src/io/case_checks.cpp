@@ -166,6 +166,24 @@ void check_fluid_method(const Case& c, const Origin& o) {
          "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
 }
 
+// SPEC §10 "Box sides": at least one side must be an outflow. There is no
+// mean-pressure constraint (SPEC §3, Decision): without a traction-free side the
+// pressure is fixed only up to a constant and the discrete system is singular, and
+// an inflow (always into the box) could not balance: ∫_∂D v·n = 0 has no solution.
+void check_fluid_sides(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  const auto& sides = f.sides;
+  if (std::find(sides.begin(), sides.end(), "outflow") != sides.end()) return;
+  const auto inflow = std::find(sides.begin(), sides.end(), "inflow");
+  const std::string key = std::string("fluid.") + kBoxSideKeys[inflow != sides.end() ? inflow - sides.begin() : 1];
+  std::string list;
+  for (std::size_t k = 0; k < sides.size(); ++k) list += (k ? ", " : "") + std::string(kBoxSideKeys[k]) + " = \"" + sides[k] + "\"";
+  fail(o, key, "leaves the fluid box without an outflow side (" + list + "): " +
+                   (inflow != sides.end() ? "the inflow has nowhere to go, and " : "") +
+                   "the pressure would be fixed only up to a constant",
+       "at least one of fluid.left, fluid.bottom, fluid.right, fluid.top = \"outflow\"");
+}
+
 // The paper's gap is the graph of the disk's upper arc over Γ_C: it has no meaning on
 // the rest of the boundary. The body-fitted fluid cannot follow contact at all.
 void check_contact_gap(const Case& c, const Origin& o) {
@@ -213,6 +231,7 @@ void check_case(const Case& c, const Origin& origin) {
   check_contact_gap(c, origin);
   if (!c.fluid) return;
   check_structure_in_box(c, origin);
+  check_fluid_sides(c, origin);
   check_fluid_method(c, origin);
   check_fluid_band(c, origin);
   if (c.fluid->mesh.empty()) check_fluid_box(c, origin);

@@ -21,12 +21,12 @@ Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& pa
 // The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
 // vertex strictly inside it (else no contact row exists), every part joined to Γ_D
 // (else A_S is singular), no vertex inside the disk, every boundary edge labelled,
-// inside the fluid box (FSI); a mesh file's extent must equal structure.L × structure.H.
+// inside the fluid box (FSI), Γ_D off an inflow on Σ1; a mesh file's extent must equal structure.L × structure.H.
 void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,
-// bottom, right and top sides (the inflow is applied on Σ4 whatever the
-// coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
+// bottom, right and top sides (fluid.left, ... are applied on the labels whatever
+// the coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
 // edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
 
