@@ -5,6 +5,7 @@
 
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
+#include "run/structure_outputs.hpp"
 
 namespace fsi {
 
@@ -46,19 +47,16 @@ void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_m
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note) {
   const FluidParams& f = *c.fluid;
-  const ObstacleParams& o = c.obstacle;
   const double pad = 0.02 * f.L1;
-  Figure fig({-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad}, 520, title);
+  const WorldBox box{-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad};
+  Figure fig(box, 520, title);
   fig.note(note);
   const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
   fig.shade(fluid_mesh, magnitude, 0.0, magnitude.maxCoeff());
-  std::vector<Point> disk;
-  for (int k = 0; k < 240; ++k) {
-    const double t = 2 * std::numbers::pi * k / 240;
-    disk.emplace_back(o.x0 + o.r * std::cos(t), o.y0 + o.r * std::sin(t));
+  for (const std::vector<Point>& hole : obstacle_outlines(c, box)) {  // every hole of D
+    fig.filled_polygon(hole, {0.82, 0.82, 0.82});
+    fig.polyline(hole, {0.1, 0.1, 0.1}, 1.0, true);
   }
-  fig.filled_polygon(disk, {0.82, 0.82, 0.82});
-  fig.polyline(disk, {0.1, 0.1, 0.1}, 1.0, true);
   for (const auto& loop : boundary_loops(deformed_structure)) fig.polyline(loop, {1, 1, 1}, 1.6, true);
   for (int v : contact_vertices) fig.marker(deformed_structure.vertices[v], {0.9, 0.1, 0.1}, 3.5);
   std::vector<std::pair<Rgb, std::string>> legend = draw_box_sides(fig, f);

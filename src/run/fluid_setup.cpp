@@ -15,6 +15,10 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
     try {
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
+      if (c.obstacles_given) {  // every obstacle a hole of D (SPEC §9; disks: check_fluid_obstacles)
+        g.holes.emplace();
+        for (const ObstacleSpec& b : c.obstacles) g.holes->push_back({b.x0, b.y0, b.r});
+      }
       return generate_fluid_mesh(g);
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
@@ -73,7 +77,7 @@ FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidPar
     bc.dirichlet_labels.push_back(label);
     if (f.sides[k] == "inflow") bc.dirichlet_values.emplace_back(label, inflow(k, f));
   }
-  bc.dirichlet_labels.push_back(mesh.label("Sigma_5"));
+  for (int label : hole_labels(mesh)) bc.dirichlet_labels.push_back(label);  // Σ5: no-slip on every hole
   return bc;
 }
 

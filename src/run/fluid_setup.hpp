@@ -31,8 +31,9 @@ Mesh make_fluid_mesh(const Case& c);
 
 // The conditions of fluid.left, bottom, right, top on the labels Σ1 … Σ4 (SPEC §10
 // "Box sides": v = 0 on a wall, the parabolic inflow into the box, an outflow
-// traction-free) and v = 0 on Σ5. The defaults are the paper's §3: v = g on Σ4 with
-// g = (0, Vmax·4x(x − L1)/L1²), v = 0 on Σ1, Σ3, Σ5, Σ2 traction-free.
+// traction-free) and v = 0 on Σ5 (every hole: hole_labels). The defaults are the
+// paper's §3: v = g on Σ4 with g = (0, Vmax·4x(x − L1)/L1²), v = 0 on Σ1, Σ3, Σ5, Σ2
+// traction-free.
 FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f);
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);

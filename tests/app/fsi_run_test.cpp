@@ -232,5 +232,31 @@ TEST(FsiRun, UserFluidMeshGivesTheSameAnswerAsTheGeneratedOne) {
   fs::remove_all(dir);
 }
 
+// [[obstacles]] in a coupled run (SPEC §9, §10): cases/flap-between-two-disks.toml, a
+// flap between two disks that are holes of the fluid box. It converges into contact
+// with the lower disk, within the exact gap's tolerance, and summary.json gives the
+// fluid's force on each disk: upward, as each disk's buoyancy 981 π r² = 7.70 N/m
+// less the drag of the downward flow.
+TEST(FsiRun, AFlapBetweenTwoDiskHolesConvergesWithEachDisksForce) {
+  const fs::path dir = testing::scratch_dir("fsi-two-disks");
+  const testing::CliRun r = testing::run_cli(
+      "run " + std::string(FSICONTACT_SOURCE_DIR) + "/cases/flap-between-two-disks.toml --out res", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  EXPECT_EQ(j["converged"], true);
+  ASSERT_EQ(j["obstacles"].size(), 2u);
+  const double buoyancy = 981 * M_PI * 0.05 * 0.05;
+  for (const auto& o : j["obstacles"]) {
+    ASSERT_TRUE(o["force"].is_array()) << o;
+    EXPECT_GT(o["force"][1].get<double>(), 0.5 * buoyancy) << o;
+    EXPECT_LT(o["force"][1].get<double>(), buoyancy) << o;
+  }
+  EXPECT_GE(j["contact"]["min_gap"].get<double>(), -1e-10 * std::hypot(0.3, 0.03));
+  EXPECT_GE(j["contact"]["obstacles"][0]["active_nodes"].get<int>(), 1) << "the flap rests on the lower disk";
+  EXPECT_EQ(j["parameters"]["obstacles"].size(), 2u);
+  EXPECT_TRUE(fs::exists(dir / "res/fsi.png"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsi
