@@ -252,6 +252,30 @@ TEST(FsiRun, TheDefaultBoxSidesReproduceTable1Row1) {
   fs::remove_all(dir);
 }
 
+// The box sides through the command line (SPEC §10): the fluid's force on the beam
+// follows the inflow. From the right (outflow left) it pushes the beam along −x,
+// from the bottom (outflow top) along +y, each the dominant component (measured,
+// Vmax = 0.2, no gravity: (−1.03, 0.009) and (0.065, 4.29) N/m).
+TEST(FsiRun, TheFluidsForceOnTheBeamFollowsTheInflowSide) {
+  const fs::path dir = testing::scratch_dir("fsi-sides");
+  const std::string base = "run " + kCoarse + " --set fluid.Vmax=0.2 --set fluid.f=[0,0] --set coupling.scheme=aitken" +
+                           " --set output.png=false --set output.vtu=false --out res";
+  const struct {
+    std::string sides;
+    int along;   // the force's axis
+    double sign;
+  } runs[] = {{" --set fluid.left=outflow --set fluid.right=inflow --set fluid.top=wall --set fluid.bottom=wall", 0, -1},
+              {" --set fluid.top=outflow --set fluid.bottom=inflow", 1, 1}};
+  for (const auto& run : runs) {
+    const testing::CliRun r = testing::run_cli(base + run.sides, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+    const double along = j["structure_force"][run.along].get<double>(), across = j["structure_force"][1 - run.along].get<double>();
+    EXPECT_GT(run.sign * along, 10 * std::abs(across)) << run.sides << ": " << j["structure_force"];
+  }
+  fs::remove_all(dir);
+}
+
 // [[obstacles]] in a coupled run (SPEC §9, §10): cases/flap-between-two-disks.toml, a
 // flap between two disks that are holes of the fluid box. It converges into contact
 // with the lower disk, within the exact gap's tolerance, and summary.json gives the
