@@ -58,7 +58,7 @@ std::unique_ptr<PenalisedStokes> stokes_with(const Box& b, const std::string& so
   const Point f_F = f.f;
   return std::make_unique<PenalisedStokes>(
       *b.fluid.mesh, f.mu, b.c.coupling.eps, [f_F](const Point&) { return f_F; },
-      paper_boundary_conditions(*b.fluid.mesh, f), solver);
+      box_boundary_conditions(*b.fluid.mesh, f), solver);
 }
 
 const Eigen::VectorXd& umfpack_solution(Box& b) {

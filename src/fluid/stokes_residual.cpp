@@ -7,7 +7,8 @@ namespace fsi {
 
 Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
                                    const std::function<Point(const Point&)>& f,
-                                   const FluidSolution& s, const std::vector<int>& vertices) {
+                                   const FluidSolution& s, const std::vector<int>& vertices,
+                                   const Eigen::VectorXd& kappa) {
   std::vector<int> column(mesh.num_vertices(), -1);
   for (std::size_t k = 0; k < vertices.size(); ++k) column[vertices[k]] = static_cast<int>(k);
   Eigen::Matrix2Xd R = Eigen::Matrix2Xd::Zero(2, static_cast<Eigen::Index>(vertices.size()));
@@ -17,7 +18,8 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
     const auto& tri = mesh.triangles[t];
     if (column[tri[0]] < 0 && column[tri[1]] < 0 && column[tri[2]] < 0) continue;
     const P1Triangle T(mesh, t);
-    const CondensedElement e = condensed_mini_element(T, mu, 0.0, element_load(T, f, rule));
+    const double penalty = kappa.size() ? kappa[t] : 0.0;
+    const CondensedElement e = condensed_mini_element(T, mu, penalty, element_load(T, f, rule));
     Vector9d z;  // [v1 at the 3 vertices, v2, p]
     for (int a = 0; a < 3; ++a)
       z[a] = s.v1[tri[a]], z[3 + a] = s.v2[tri[a]], z[6 + a] = s.p[tri[a]];

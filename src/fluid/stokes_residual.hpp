@@ -20,10 +20,13 @@
 namespace fsi {
 
 // Column k: (R_{i,1}, R_{i,2}) for i = vertices[k]. Only the triangles around these
-// vertices are visited. For a solution computed with χ = 0 (no penalty); a vertex on
-// a traction boundary would also carry that traction.
+// vertices are visited. `kappa`: the penalty χ/ε per triangle the solution was
+// computed with, (1/ε)∫χ v·φ_i e_c then part of R (the whole discrete equation's
+// residual); empty: χ = 0. A vertex on a traction boundary would also carry that
+// traction.
 Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
                                    const std::function<Point(const Point&)>& f,
-                                   const FluidSolution& solution, const std::vector<int>& vertices);
+                                   const FluidSolution& solution, const std::vector<int>& vertices,
+                                   const Eigen::VectorXd& kappa = {});
 
 }  // namespace fsi

@@ -167,6 +167,8 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   p.mu = s.number("mu", p.mu, kSize);
   p.f = s.vector2("f", p.f);
   p.Vmax = s.number("Vmax", p.Vmax, kSigned);
+  for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k)
+    p.sides[k] = s.choice(kBoxSideKeys[k], p.sides[k], {"wall", "inflow", "outflow"});
   p.h = s.number("h", p.h, kSize);
   p.mesh = resolve_path(s.text("mesh", ""), case_path);
   p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
@@ -347,6 +349,7 @@ std::string to_toml(const Case& c) {
     if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
     else ft.insert("band", f.band);
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
+    for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) ft.insert(kBoxSideKeys[k], f.sides[k]);
     t.insert("fluid", ft);
   }
   const auto& k = c.coupling;

@@ -44,8 +44,16 @@ struct ObstacleSpec {
   Point normal = Point::Zero();            // and its outward normal (unit)
 };
 
+// The box sides Σ1 … Σ4 by their keys fluid.left, bottom, right, top (SPEC §10 "Box
+// sides"), in the order of FluidParams::sides.
+inline constexpr std::array<const char*, 4> kBoxSideKeys = {"left", "bottom", "right", "top"};
+
 struct FluidParams {
   double L1 = 0.41, H1 = 0.5, H2 = 0.5;
+  // Σ1 left (x = 0), Σ2 bottom (y = −H2), Σ3 right (x = L1), Σ4 top (y = H1): each
+  // "wall" (v = 0), "inflow" (parabolic, into the box, peak Vmax) or "outflow"
+  // (traction-free). The defaults are the paper's (§3).
+  std::array<std::string, 4> sides = {"wall", "outflow", "wall", "inflow"};
   double mu = 0.0035;
   Point f{0.0, -9.81 * 100.0};  // f_F, N/m³
   double Vmax = 8.0;

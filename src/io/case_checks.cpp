@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "io/case.hpp"
 #include "io/case_reader.hpp"
@@ -73,14 +75,29 @@ void check_strain(const Case& c, const Origin& o) {
   if (!problem.empty()) throw InputError(o.of("structure.E") + ": " + problem);
 }
 
-// The generated box: the disk inside it with room for a triangle between it and
-// every side (a gap below half of hF leaves slivers), at most the stated size.
-void check_fluid_box(const Case& c, const Origin& o) {
+// A hole of the generated box: [obstacle]'s disk, or a disk of [[obstacles]]; `key`
+// names it in messages ("obstacle", "obstacles[2]").
+struct Hole {
+  double x0, y0, r;
+  std::string key;
+};
+
+std::vector<Hole> fluid_holes(const Case& c) {
+  if (!c.obstacles_given) return {{c.obstacle.x0, c.obstacle.y0, c.obstacle.r, "obstacle"}};
+  std::vector<Hole> holes;
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i)
+    holes.push_back({c.obstacles[i].x0, c.obstacles[i].y0, c.obstacles[i].r, "obstacles[" + std::to_string(i + 1) + "]"});
+  return holes;
+}
+
+// The disk inside the box with room for a triangle between it and every side (a gap
+// below half of hF leaves slivers), its circle at least six segments.
+void check_hole_in_box(const Case& c, const Origin& o, const Hole& ob) {
   const auto& f = *c.fluid;
-  const auto& ob = c.obstacle;
+  const std::string whose = ob.key == "obstacle" ? "the obstacle's" : ob.key + "'s";
   if (!(f.h <= ob.r))
-    fail(o, "fluid.h", "= " + shortest(f.h) + " is larger than the obstacle's radius (the circle needs six segments)",
-         "(0, obstacle.r = " + shortest(ob.r) + "] (" + o.value("obstacle.r", ob.r, "fluid.h") + ")");
+    fail(o, "fluid.h", "= " + shortest(f.h) + " is larger than " + whose + " radius (the circle needs six segments)",
+         "(0, " + ob.key + ".r = " + shortest(ob.r) + "] (" + o.value(ob.key + ".r", ob.r, "fluid.h") + ")");
   const double gap = f.h / 2;
   const struct {
     const char* side;
@@ -91,11 +108,37 @@ void check_fluid_box(const Case& c, const Origin& o) {
                {"top y = fluid.H1", f.H1 - (ob.y0 + ob.r)}};
   for (const auto& side : sides)
     if (!(side.distance >= gap))
-      fail(o, "obstacle.r", "= " + shortest(ob.r) + " at (" + shortest(ob.x0) + ", " + shortest(ob.y0) +
+      fail(o, ob.key + ".r", "= " + shortest(ob.r) + " at (" + shortest(ob.x0) + ", " + shortest(ob.y0) +
                                 ") leaves " + approx(side.distance) + " to the fluid box's " + side.side,
            "the disk inside (0, L1) x (-H2, H1) = (0, " + shortest(f.L1) + ") x (" + shortest(-f.H2) + ", " +
                shortest(f.H1) + ") at least fluid.h/2 = " + approx(gap) + " from every side");
-  const double area = f.L1 * (f.H1 + f.H2) - std::numbers::pi * ob.r * ob.r;
+}
+
+// Two holes of D must not meet: at least a triangle (fluid.h/2) between their circles.
+void check_holes_apart(const Case& c, const Origin& o, const std::vector<Hole>& holes) {
+  const double gap = c.fluid->h / 2;
+  for (std::size_t j = 1; j < holes.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const Hole &a = holes[i], &b = holes[j];
+      const double between = std::hypot(b.x0 - a.x0, b.y0 - a.y0) - a.r - b.r;
+      if (!(between >= gap))
+        fail(o, b.key, (between < 0 ? "overlaps " + a.key : "comes within " + approx(between) + " of " + a.key) +
+                           " (disks at (" + shortest(a.x0) + ", " + shortest(a.y0) + ") and (" + shortest(b.x0) +
+                           ", " + shortest(b.y0) + "))",
+             "in a fluid box, disks at least fluid.h/2 = " + approx(gap) + " apart (each is a hole of D)");
+    }
+}
+
+// The generated box and its holes, at most the stated size.
+void check_fluid_box(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  const std::vector<Hole> holes = fluid_holes(c);
+  double area = f.L1 * (f.H1 + f.H2);
+  for (const Hole& hole : holes) {
+    check_hole_in_box(c, o, hole);
+    area -= std::numbers::pi * hole.r * hole.r;
+  }
+  check_holes_apart(c, o, holes);
   double estimate = 2.4 * area / (f.h * f.h);
   if (f.h_near > 0) {  // the band's triangles; a width: around the structure at rest at least
     const auto& s = c.structure;
@@ -153,6 +196,24 @@ void check_fluid_method(const Case& c, const Origin& o) {
          "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
 }
 
+// SPEC §10 "Box sides": at least one side must be an outflow. There is no
+// mean-pressure constraint (SPEC §3, Decision): without a traction-free side the
+// pressure is fixed only up to a constant and the discrete system is singular, and
+// an inflow (always into the box) could not balance: ∫_∂D v·n = 0 has no solution.
+void check_fluid_sides(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  const auto& sides = f.sides;
+  if (std::find(sides.begin(), sides.end(), "outflow") != sides.end()) return;
+  const auto inflow = std::find(sides.begin(), sides.end(), "inflow");
+  const std::string key = std::string("fluid.") + kBoxSideKeys[inflow != sides.end() ? inflow - sides.begin() : 1];
+  std::string list;
+  for (std::size_t k = 0; k < sides.size(); ++k) list += (k ? ", " : "") + std::string(kBoxSideKeys[k]) + " = \"" + sides[k] + "\"";
+  fail(o, key, "leaves the fluid box without an outflow side (" + list + "): " +
+                   (inflow != sides.end() ? "the inflow has nowhere to go, and " : "") +
+                   "the pressure would be fixed only up to a constant",
+       "at least one of fluid.left, fluid.bottom, fluid.right, fluid.top = \"outflow\"");
+}
+
 // The paper's gap is the graph of the disk's upper arc over Γ_C: it has no meaning on
 // the rest of the boundary. The body-fitted fluid cannot follow contact at all.
 void check_contact_gap(const Case& c, const Origin& o) {
@@ -164,10 +225,29 @@ void check_contact_gap(const Case& c, const Origin& o) {
          "\"paper\" with fluid.method = \"body-fitted\"");
 }
 
+// [[obstacles]] in a coupled run (SPEC §9): every obstacle is a hole of the generated
+// box (checked with it, check_fluid_box), so disks only; a mesh file's Σ5 and the
+// body-fitted mesh know [obstacle]'s one disk only.
+void check_fluid_obstacles(const Case& c, const Origin& o) {
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i)
+    if (c.obstacles[i].shape != "disk")
+      fail(o, "obstacles[" + std::to_string(i + 1) + "].shape",
+           "= \"" + c.obstacles[i].shape + "\" " +
+               (c.obstacles[i].shape == "polygon" ? "is not meshed as a hole of the fluid box yet (contact problems only)"
+                                                  : "is for contact problems only (no [fluid]): a fluid box's obstacles are its holes"),
+           "\"disk\" with a [fluid] section");
+  if (!c.fluid->mesh.empty())
+    fail(o, "fluid.mesh", "= \"" + c.fluid->mesh + "\" cannot be used with [[obstacles]]: a mesh file's hole Sigma_5 is "
+                          "checked against [obstacle]'s one disk",
+         "no fluid.mesh with [[obstacles]] (the generated box has a hole per obstacle), or [obstacle]");
+  if (c.fluid->method == "body-fitted")
+    fail(o, "fluid.method", "= \"body-fitted\" meshes the box with [obstacle]'s one disk, not [[obstacles]]",
+         "\"penalised\" with [[obstacles]]");
+}
+
 // [[obstacles]] (SPEC §9): the signed-distance gap only (eq. 15 is the graph of one
-// disk); contact problems only for now (in a coupled run every obstacle would be a hole
-// of D, which the fluid meshes do not have yet); a generated rectangle's Γ_C is the
-// paper disk's span, so there every edge off Γ_D is the candidate.
+// disk); with a fluid, holes of D (check_fluid_obstacles); a generated rectangle's Γ_C
+// is the paper disk's span, so there every edge off Γ_D is the candidate.
 void check_obstacles(const Case& c, const Origin& o) {
   if (!c.obstacles_given) return;
   if (c.obstacle_given)
@@ -175,9 +255,7 @@ void check_obstacles(const Case& c, const Origin& o) {
   if (c.contact.gap != "normal")
     fail(o, "contact.gap", "= \"" + c.contact.gap + "\" cannot use [[obstacles]] (eq. 15 is the graph of one disk)",
          "\"normal\" with [[obstacles]]");
-  if (c.fluid)
-    fail(o, "obstacles", "are for the contact problem in this version (no [fluid]): the fluid box has the paper's one disk",
-         "[obstacle] with a [fluid] section");
+  if (c.fluid) check_fluid_obstacles(c, o);
   if (c.structure.rectangle() && c.contact.boundary != "all")
     fail(o, "contact.boundary", "= \"" + c.contact.boundary + "\": the generated rectangle's Gamma_C follows [obstacle]'s disk",
          "\"all\" with [[obstacles]] and a generated structure");
@@ -201,6 +279,7 @@ void check_case(const Case& c, const Origin& origin) {
   check_contact_gap(c, origin);
   if (!c.fluid) return;
   if (rectangle) check_structure_in_box(c, origin);
+  check_fluid_sides(c, origin);
   check_fluid_method(c, origin);
   check_fluid_band(c, origin);
   if (c.fluid->mesh.empty()) check_fluid_box(c, origin);

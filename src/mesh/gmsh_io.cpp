@@ -100,9 +100,25 @@ Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
   const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
   FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u, g.h_near / u, g.band};
   for (double& b : scaled.band) b /= u;
+  std::vector<std::string> labels = {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"};
+  if (g.holes) {
+    scaled.holes.emplace();
+    for (const auto& d : *g.holes) {
+      scaled.holes->push_back({d[0] / u, d[1] / u, d[2] / u});
+      labels.push_back("Sigma_5_" + std::to_string(scaled.holes->size()));
+    }
+  } else {
+    labels.push_back("Sigma_5");
+  }
   return generate(
-      "meshing the fluid box", [&] { return mesh_fluid_in_gmsh(scaled); }, u,
-      {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D", limits);
+      "meshing the fluid box", [&] { return mesh_fluid_in_gmsh(scaled); }, u, labels, "D", limits);
+}
+
+std::vector<int> hole_labels(const Mesh& mesh) {
+  if (mesh.has_label("Sigma_5")) return {mesh.label("Sigma_5")};
+  std::vector<int> labels;
+  for (int i = 1; mesh.has_label("Sigma_5_" + std::to_string(i)); ++i) labels.push_back(mesh.label("Sigma_5_" + std::to_string(i)));
+  return labels;
 }
 
 Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,8 @@ struct StructureGeometry {
 Mesh generate_structure_mesh(const StructureGeometry& g);
 Mesh generate_structure_mesh(const StructureGeometry& g, const GmshLimits& limits);
 
-// D = (0,L1)×(−H2,H1) minus the disk B((x0,y0),r); labels Sigma_1 (left),
-// Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle).
+// D = (0,L1)×(−H2,H1) minus the disk B((x0,y0),r) (or minus `holes`); labels Sigma_1
+// (left), Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle).
 //
 // With h_near > 0, triangles of size h_near inside the box `band` ([x_min, y_min,
 // x_max, y_max]), growing linearly by kBandGrowth per unit distance from it up to h
@@ -39,7 +40,14 @@ struct FluidGeometry {
   double h;
   double h_near = 0;
   std::array<double, 4> band{};
+  // [[obstacles]] (SPEC §9): these disks (x0, y0, r), any number, are D's holes
+  // instead of the one above, labelled Sigma_5_1, Sigma_5_2, ... in this order (their
+  // union is Σ5; Gmsh's model also has it as the group Sigma_5).
+  std::optional<std::vector<std::array<double, 3>>> holes = std::nullopt;
 };
+// The labels of D's holes in a mesh of generate_fluid_mesh or a file: Sigma_5, or
+// Sigma_5_1, Sigma_5_2, ... (none for a box without holes).
+std::vector<int> hole_labels(const Mesh& mesh);
 // The size's growth away from the band, per unit length. Measured on §7.2 (docs/
 // validation.md, "Band refinement"): halving it or the far size h moves max |u| by
 // under 0.5 µm at h_near = 0.001, while the triangle count stays within 10 % of the

@@ -240,6 +240,21 @@ RawMesh mesh_structure_in_gmsh(const StructureGeometry& g) {
                   {1, "Gamma_N", {bottom_left, bottom_right, right, top}}});
 }
 
+namespace {
+
+// A circle as four arcs, east → north → west → south → east, in the order (and so
+// with the tags) the paper's one-disk box always had.
+std::vector<int> add_circle(double x0, double y0, double r, double h) {
+  namespace geo = gmsh::model::geo;
+  const int centre = geo::addPoint(x0, y0, 0, h);
+  const int e = geo::addPoint(x0 + r, y0, 0, h), n = geo::addPoint(x0, y0 + r, 0, h),
+            w = geo::addPoint(x0 - r, y0, 0, h), s = geo::addPoint(x0, y0 - r, 0, h);
+  return {geo::addCircleArc(e, centre, n), geo::addCircleArc(n, centre, w), geo::addCircleArc(w, centre, s),
+          geo::addCircleArc(s, centre, e)};
+}
+
+}  // namespace
+
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
   configure_gmsh(0);
   namespace geo = gmsh::model::geo;
@@ -249,23 +264,27 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
             c = geo::addPoint(g.L1, g.H1, 0, h), d = geo::addPoint(0, g.H1, 0, h);
   const int bottom = geo::addLine(a, b), right = geo::addLine(b, c), top = geo::addLine(c, d),
             left = geo::addLine(d, a);
-  const int centre = geo::addPoint(g.x0, g.y0, 0, h);
-  const int e = geo::addPoint(g.x0 + g.r, g.y0, 0, h), n = geo::addPoint(g.x0, g.y0 + g.r, 0, h),
-            w = geo::addPoint(g.x0 - g.r, g.y0, 0, h), s = geo::addPoint(g.x0, g.y0 - g.r, 0, h);
-  const std::vector<int> arcs = {geo::addCircleArc(e, centre, n), geo::addCircleArc(n, centre, w),
-                                 geo::addCircleArc(w, centre, s), geo::addCircleArc(s, centre, e)};
-  const int outer = geo::addCurveLoop({bottom, right, top, left});
-  const int hole = geo::addCurveLoop(arcs);
-  const int surface = geo::addPlaneSurface({outer, hole});
+  const std::vector<std::array<double, 3>> disks = g.holes ? *g.holes : std::vector<std::array<double, 3>>{{g.x0, g.y0, g.r}};
+  std::vector<std::vector<int>> arcs;
+  for (const auto& disk : disks) arcs.push_back(add_circle(disk[0], disk[1], disk[2], h));
+  std::vector<int> loops = {geo::addCurveLoop({bottom, right, top, left})};
+  for (const auto& circle : arcs) loops.push_back(geo::addCurveLoop(circle));
+  const int surface = geo::addPlaneSurface(loops);
   geo::synchronize();
   if (g.h_near > 0) add_band_field(g);
   mesh_2d(h, g.h_near > 0 ? MeshOptions{5, 0} : MeshOptions{});
-  return extract({{2, "D", {surface}},
-                  {1, "Sigma_1", {left}},
-                  {1, "Sigma_2", {bottom}},
-                  {1, "Sigma_3", {right}},
-                  {1, "Sigma_4", {top}},
-                  {1, "Sigma_5", arcs}});
+  std::vector<RawGroup> groups = {{2, "D", {surface}},
+                                  {1, "Sigma_1", {left}},
+                                  {1, "Sigma_2", {bottom}},
+                                  {1, "Sigma_3", {right}},
+                                  {1, "Sigma_4", {top}}};
+  std::vector<int> all_arcs;  // Σ5, and each hole's own group for its force (SPEC §10)
+  for (std::size_t k = 0; k < arcs.size(); ++k) {
+    all_arcs.insert(all_arcs.end(), arcs[k].begin(), arcs[k].end());
+    if (g.holes) groups.push_back({1, "Sigma_5_" + std::to_string(k + 1), arcs[k]});
+  }
+  if (!all_arcs.empty()) groups.push_back({1, "Sigma_5", all_arcs});
+  return extract(std::move(groups));
 }
 
 RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g) {

@@ -5,6 +5,7 @@
 
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
+#include "run/structure_outputs.hpp"
 
 namespace fsi {
 
@@ -16,29 +17,53 @@ void write_fluid_vtu(const std::string& path, const Mesh& mesh, const FluidSolut
              scalar_field("pressure", s.p), scalar_field("chi", chi, true)});
 }
 
+namespace {
+
+constexpr Rgb kInflowColour{0.15, 0.35, 0.95}, kOutflowColour{0.1, 0.75, 0.25};
+
+// The inflow and outflow sides (fluid.left, ...: SPEC §10) as thick lines along the
+// box, and their legend entries.
+std::vector<std::pair<Rgb, std::string>> draw_box_sides(Figure& fig, const FluidParams& f) {
+  const Point corner[4] = {{0, -f.H2}, {f.L1, -f.H2}, {f.L1, f.H1}, {0, f.H1}};
+  // Σ1 left, Σ2 bottom, Σ3 right, Σ4 top: from corner a to corner b.
+  const int ends[4][2] = {{3, 0}, {0, 1}, {1, 2}, {2, 3}};
+  bool drawn[2] = {false, false};
+  for (int k = 0; k < 4; ++k) {
+    if (f.sides[k] == "wall") continue;
+    const bool in = f.sides[k] == "inflow";
+    fig.polyline({corner[ends[k][0]], corner[ends[k][1]]}, in ? kInflowColour : kOutflowColour, 4.0, false);
+    drawn[in ? 0 : 1] = true;
+  }
+  std::vector<std::pair<Rgb, std::string>> entries;
+  if (drawn[0]) entries.push_back({kInflowColour, "inflow"});
+  if (drawn[1]) entries.push_back({kOutflowColour, "outflow"});
+  return entries;
+}
+
+}  // namespace
+
 void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
                      const FluidSolution& s, const Mesh& deformed_structure,
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note) {
   const FluidParams& f = *c.fluid;
-  const ObstacleParams& o = c.obstacle;
   const double pad = 0.02 * f.L1;
-  Figure fig({-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad}, 520, title);
+  const WorldBox box{-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad};
+  Figure fig(box, 520, title);
   fig.note(note);
   const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
   fig.shade(fluid_mesh, magnitude, 0.0, magnitude.maxCoeff());
-  std::vector<Point> disk;
-  for (int k = 0; k < 240; ++k) {
-    const double t = 2 * std::numbers::pi * k / 240;
-    disk.emplace_back(o.x0 + o.r * std::cos(t), o.y0 + o.r * std::sin(t));
+  for (const std::vector<Point>& hole : obstacle_outlines(c, box)) {  // every hole of D
+    fig.filled_polygon(hole, {0.82, 0.82, 0.82});
+    fig.polyline(hole, {0.1, 0.1, 0.1}, 1.0, true);
   }
-  fig.filled_polygon(disk, {0.82, 0.82, 0.82});
-  fig.polyline(disk, {0.1, 0.1, 0.1}, 1.0, true);
   for (const auto& loop : boundary_loops(deformed_structure)) fig.polyline(loop, {1, 1, 1}, 1.6, true);
   for (int v : contact_vertices) fig.marker(deformed_structure.vertices[v], {0.9, 0.1, 0.1}, 3.5);
+  std::vector<std::pair<Rgb, std::string>> legend = draw_box_sides(fig, f);
   fig.axes("x (m)", "y (m)");
   fig.colour_bar(0.0, magnitude.maxCoeff(), "|v| (m/s)");
-  fig.legend({{{1, 1, 1}, "structure"}, {{0.82, 0.82, 0.82}, "obstacle"}, {{0.9, 0.1, 0.1}, "contact"}});
+  legend.insert(legend.begin(), {{{1, 1, 1}, "structure"}, {{0.82, 0.82, 0.82}, "obstacle"}, {{0.9, 0.1, 0.1}, "contact"}});
+  fig.legend(legend);
   fig.save_png(path);
 }
 

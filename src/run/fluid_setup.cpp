@@ -15,6 +15,10 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
     try {
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
+      if (c.obstacles_given) {  // every obstacle a hole of D (SPEC §9; disks: check_fluid_obstacles)
+        g.holes.emplace();
+        for (const ObstacleSpec& b : c.obstacles) g.holes->push_back({b.x0, b.y0, b.r});
+      }
       return generate_fluid_mesh(g);
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
@@ -37,17 +41,43 @@ Mesh make_fluid_mesh(const Case& c) {
   return mesh;
 }
 
-FluidBoundaryConditions paper_boundary_conditions(const Mesh& mesh, const FluidParams& f) {
+namespace {
+
+// The inflow on side k (SPEC §10 "Box sides"): normal to the side, into the box, of
+// magnitude Vmax·4s(ℓ − s)/ℓ², s the coordinate along the side from its lower or left
+// end. It is written as Vmax·4s(s − ℓ)/ℓ² (≤ 0) times the outward normal's component,
+// so that Σ4's is, bit for bit, the paper's g = (0, Vmax·4x(x − L1)/L1²) of §3. It
+// vanishes at both ends: the corners shared with walls or other inflows agree.
+VectorField inflow(int k, const FluidParams& f) {
+  const double Vmax = f.Vmax, H2 = f.H2;
+  const bool vertical = k == 0 || k == 2;           // Σ1, Σ3: along y
+  const double l = vertical ? f.H1 + f.H2 : f.L1;   // ℓ
+  const double outward = k == 0 || k == 1 ? -1 : 1;  // Σ1: −x, Σ2: −y, Σ3: +x, Σ4: +y
+  if (vertical)
+    return [=](const Point& x) {
+      const double s = x.y() + H2;
+      return Point(outward * (Vmax * 4 * s * (s - l) / (l * l)), 0);
+    };
+  return [=](const Point& x) {
+    const double s = x.x();
+    return Point(0, outward * (Vmax * 4 * s * (s - l) / (l * l)));
+  };
+}
+
+}  // namespace
+
+FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f) {
   FluidBoundaryConditions bc;
-  for (const char* name : {"Sigma_1", "Sigma_3", "Sigma_4", "Sigma_5"})
-    bc.dirichlet_labels.push_back(mesh.label(name));
-  // The inflow on the label Σ4, whatever its coordinates (a mesh whose Σ4 is not at
-  // y = H1 is refused by check_fluid_mesh). g vanishes at x = 0 and x = L1, so the
-  // corners shared with the walls Σ1, Σ3 agree.
-  const double L1 = f.L1, Vmax = f.Vmax;
-  bc.dirichlet_values.emplace_back(mesh.label("Sigma_4"), [L1, Vmax](const Point& x) {
-    return Point(0, Vmax * 4 * x.x() * (x.x() - L1) / (L1 * L1));
-  });
+  // On the labels, whatever their coordinates (a mesh whose Σk is not on side k is
+  // refused by check_fluid_mesh). An outflow side is natural (traction-free), so it
+  // is simply not Dirichlet. The defaults give the labels Σ1, Σ3, Σ4, Σ5 in this order.
+  for (int k = 0; k < 4; ++k) {
+    if (f.sides[k] == "outflow") continue;
+    const int label = mesh.label("Sigma_" + std::to_string(k + 1));
+    bc.dirichlet_labels.push_back(label);
+    if (f.sides[k] == "inflow") bc.dirichlet_values.emplace_back(label, inflow(k, f));
+  }
+  for (int label : hole_labels(mesh)) bc.dirichlet_labels.push_back(label);  // Σ5: no-slip on every hole
   return bc;
 }
 
@@ -59,7 +89,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
   const Point f_F = f.f;
   s.stokes = std::make_unique<PenalisedStokes>(*s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; },
-                                               paper_boundary_conditions(*s.mesh, f));
+                                               box_boundary_conditions(*s.mesh, f));
   s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur);
   s.stokes->set_far_factor_budget(f.keep_far_factors_mb);
   return s;

@@ -1,6 +1,6 @@
 // Everything about the fluid that a run builds once: the fixed mesh of D, its point
-// locator, the χ rule, and the penalised Stokes system with the paper's boundary
-// conditions (SPEC §3).
+// locator, the χ rule, and the penalised Stokes system with the box's boundary
+// conditions (SPEC §3, §10).
 #pragma once
 
 #include <array>
@@ -29,9 +29,12 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
 // (a mesh file) check_fluid_mesh against the case's keys.
 Mesh make_fluid_mesh(const Case& c);
 
-// v = g on the label Σ4 (g = (0, Vmax·4x(x − L1)/L1²)), v = 0 on Σ1, Σ3, Σ5, Σ2
+// The conditions of fluid.left, bottom, right, top on the labels Σ1 … Σ4 (SPEC §10
+// "Box sides": v = 0 on a wall, the parabolic inflow into the box, an outflow
+// traction-free) and v = 0 on Σ5 (every hole: hole_labels). The defaults are the
+// paper's §3: v = g on Σ4 with g = (0, Vmax·4x(x − L1)/L1²), v = 0 on Σ1, Σ3, Σ5, Σ2
 // traction-free.
-FluidBoundaryConditions paper_boundary_conditions(const Mesh& mesh, const FluidParams& f);
+FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f);
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
 

@@ -132,6 +132,19 @@ void check_inside_box(const Case& c, const Mesh& mesh, const std::string& what) 
                      ") x (" + shortest(-f.H2) + ", " + shortest(f.H1) + "); allowed: a structure inside the box");
 }
 
+// An inflow on Σ1 would blow into the structure's clamped side Γ_D where it lies on
+// x = 0: the inflow's velocity prescribed at fluid vertices the structure covers,
+// against the penalty that holds v ≈ 0 there (SPEC §1: Γ_D lies on Σ1).
+void check_clamp_off_inflow(const Case& c, const Mesh& mesh, const std::string& what) {
+  if (!c.fluid || c.fluid->sides[0] != "inflow") return;
+  const double tol = kRelativeTolerance * std::hypot(c.fluid->L1, c.fluid->H1 + c.fluid->H2);
+  for (int v : mesh.vertices_on(mesh.label("Gamma_D")))
+    if (std::abs(mesh.vertices[v].x()) <= tol)
+      throw InputError(c.source + ": fluid.left = \"inflow\" blows into the structure's clamped side Gamma_D on " +
+                       "Sigma_1 (" + what + ", vertex " + at(mesh.vertices[v]) + "); allowed: fluid.left = " +
+                       "\"wall\" or \"outflow\" while the structure is clamped on x = 0");
+}
+
 }  // namespace
 
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
@@ -182,6 +195,7 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
   check_clamped(c, mesh, what);
   check_outside_disk(c, mesh, what);
   if (c.fluid) check_inside_box(c, mesh, what);
+  check_clamp_off_inflow(c, mesh, what);
 }
 
 void check_fluid_mesh(const Case& c, const Mesh& mesh) {
@@ -202,21 +216,24 @@ void check_fluid_mesh(const Case& c, const Mesh& mesh) {
   if (std::abs(b.lo.y() + f.H2) > tol)
     contradiction(c, "fluid.H2", f.H2, "fluid.mesh", file, "its vertices reach y = " + shortest(b.lo.y()),
                   "fluid.H2 = " + shortest(-b.lo.y()) + ", the mesh's");
-  // Each side's label on that side: the inflow goes where Sigma_4 is.
+  // Each side's label on that side: its condition (fluid.left, ...) goes where Sigma_k is.
   const struct {
-    const char* label;
+    int k;  // Σ(k+1)
     const char* side;
     int axis;
     double value;
-  } sides[] = {{"Sigma_4", "the top y = fluid.H1 (the inflow)", 1, f.H1},
-               {"Sigma_1", "the left side x = 0", 0, 0.0},
-               {"Sigma_2", "the bottom y = -fluid.H2 (the outlet)", 1, -f.H2},
-               {"Sigma_3", "the right side x = fluid.L1", 0, f.L1}};
-  for (const auto& side : sides)
-    for (int v : mesh.vertices_on(mesh.label(side.label)))
+  } sides[] = {{3, "the top y = fluid.H1", 1, f.H1},
+               {0, "the left side x = 0", 0, 0.0},
+               {1, "the bottom y = -fluid.H2", 1, -f.H2},
+               {2, "the right side x = fluid.L1", 0, f.L1}};
+  for (const auto& side : sides) {
+    const std::string label = "Sigma_" + std::to_string(side.k + 1);
+    const std::string where = std::string(side.side) + " (fluid." + kBoxSideKeys[side.k] + " = \"" + f.sides[side.k] + "\")";
+    for (int v : mesh.vertices_on(mesh.label(label)))
       if (std::abs(mesh.vertices[v][side.axis] - side.value) > tol)
-        throw InputError(c.source + ": fluid.mesh " + file + ": " + side.label + " has the vertex " +
-                         at(mesh.vertices[v]) + ", not on " + side.side + "; allowed: " + side.label + " = " + side.side);
+        throw InputError(c.source + ": fluid.mesh " + file + ": " + label + " has the vertex " +
+                         at(mesh.vertices[v]) + ", not on " + where + "; allowed: " + label + " = " + where);
+  }
   const Point centre(o.x0, o.y0);
   for (int v : mesh.vertices_on(mesh.label("Sigma_5"))) {
     const double d = (mesh.vertices[v] - centre).norm();

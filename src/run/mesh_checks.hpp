@@ -23,13 +23,14 @@ Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& pa
 // The structure's mesh (generated or read): Γ_C inside the obstacle's span with a
 // vertex strictly inside it (else no contact row exists), every part joined to Γ_D
 // (else A_S is singular), no vertex inside the disk, every boundary edge labelled,
-// inside the fluid box (FSI); a file's (mesh or script) extent must equal structure.L ×
-// structure.H from (0, 0) if either is given, and its loads strain it little.
+// inside the fluid box (FSI), Γ_D off an inflow on Σ1; a file's (mesh or script) extent
+// must equal structure.L × structure.H from (0, 0) if either is given, and its loads
+// strain it little.
 void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,
-// bottom, right and top sides (the inflow is applied on Σ4 whatever the
-// coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
+// bottom, right and top sides (fluid.left, ... are applied on the labels whatever
+// the coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
 // edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
 

@@ -37,7 +37,7 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
   p.f = [f_F](const Point&) { return f_F; };
   const FluidParams params = f;
   p.boundary_conditions = [params](const Mesh& mesh) {
-    return paper_boundary_conditions(mesh, params);
+    return box_boundary_conditions(mesh, params);
   };
   return p;
 }

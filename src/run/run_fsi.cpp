@@ -19,6 +19,7 @@
 #include "run/contact_gap.hpp"
 #include "run/fluid_band.hpp"
 #include "run/fluid_setup.hpp"
+#include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
 #include "run/probes.hpp"
 #include "run/run_case.hpp"
@@ -282,6 +283,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
   }
+  if (c.obstacles_given) j["obstacles"] = obstacle_forces_json(c, f);  // the fluid's force on each (SPEC §10)
   j["fluid"] = fluid_json(*f.stokes);
   r.report = fsi_report(c, result, norms, max_u, cs, s_stats, f_stats, *f.stokes, fluid_only);
   r.exit_status = !result.failure.empty() ? 1 : result.interrupted ? interrupted_exit_status() : result.converged ? 0 : 3;

@@ -12,17 +12,27 @@ namespace fsi {
 // included, remeshes: a forgotten key costs time, never a wrong mesh.
 // The mesh files' names are appended as they are: json_text replaces bytes that are
 // not UTF-8, so two such names could otherwise share a key.
+namespace {
+
+// [[obstacles]] as in summary.json (empty without them).
+std::string obstacles_text(const Case& c) {
+  const Json all = to_json(c);
+  return all.contains("obstacles") ? json_text(all["obstacles"]) : std::string();
+}
+
+}  // namespace
+
+// [[obstacles]] shape the contact constraint, and D's holes.
 std::string structure_mesh_key(const Case& c) {
-  const Json all = to_json(c);  // [[obstacles]] too, which shape the contact constraint
-  const std::string obstacles = all.contains("obstacles") ? json_text(all["obstacles"]) : std::string();
-  return json_text(to_json(c.structure)) + json_text(to_json(c.obstacle)) + obstacles + '\0' + c.structure.mesh;
+  return json_text(to_json(c.structure)) + json_text(to_json(c.obstacle)) + obstacles_text(c) + '\0' + c.structure.mesh;
 }
 
 std::string fluid_mesh_key(const Case& c) {
   Json geometry = to_json(*c.fluid);
-  for (const char* solver_only : {"mu", "f", "Vmax", "chi", "factorization", "keep_far_factors_mb"})
+  for (const char* solver_only : {"mu", "f", "Vmax", "chi", "factorization", "keep_far_factors_mb", "left", "bottom",
+                                  "right", "top"})
     geometry.erase(solver_only);
-  return json_text(geometry) + json_text(to_json(c.obstacle)) + '\0' + c.fluid->mesh;
+  return json_text(geometry) + json_text(to_json(c.obstacle)) + obstacles_text(c) + '\0' + c.fluid->mesh;
 }
 
 // make_structure reads structure.*, obstacle.* and contact.*; make_fluid fluid.*

@@ -37,17 +37,6 @@ std::vector<Point> half_plane_polygon(const Point& q, const Point& n, const Worl
   return out;
 }
 
-// Every obstacle of the case: [obstacle]'s disk, or those of [[obstacles]].
-std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox& box) {
-  if (!c.obstacles_given) return {disk_polygon(c.obstacle.x0, c.obstacle.y0, c.obstacle.r)};
-  std::vector<std::vector<Point>> out;
-  for (const ObstacleSpec& o : c.obstacles)
-    out.push_back(o.shape == "disk"      ? disk_polygon(o.x0, o.y0, o.r)
-                  : o.shape == "polygon" ? o.points
-                                         : half_plane_polygon(o.point, o.normal, box));
-  return out;
-}
-
 // The lowest point of the obstacles' tops the frame should show.
 double lowest_obstacle_top(const Case& c) {
   if (!c.obstacles_given) return c.obstacle.y0 + 0.3 * c.obstacle.r;
@@ -65,6 +54,16 @@ double lowest_obstacle_top(const Case& c) {
 }
 
 }  // namespace
+
+std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox& box) {
+  if (!c.obstacles_given) return {disk_polygon(c.obstacle.x0, c.obstacle.y0, c.obstacle.r)};
+  std::vector<std::vector<Point>> out;
+  for (const ObstacleSpec& o : c.obstacles)
+    out.push_back(o.shape == "disk"      ? disk_polygon(o.x0, o.y0, o.r)
+                  : o.shape == "polygon" ? o.points
+                                         : half_plane_polygon(o.point, o.normal, box));
+  return out;
+}
 
 void write_structure_vtu(const std::string& path, const StructureSetup& s,
                          const ContactSolution& solution, bool deformed) {

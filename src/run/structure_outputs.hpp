@@ -2,8 +2,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "io/case.hpp"
+#include "io/figure.hpp"
 #include "run/structure_setup.hpp"
 
 namespace fsi {
@@ -13,6 +15,10 @@ namespace fsi {
 // reference ones (to use ParaView's "Warp By Vector").
 void write_structure_vtu(const std::string& path, const StructureSetup& s,
                          const ContactSolution& solution, bool deformed);
+
+// Every obstacle of the case as a polygon: [obstacle]'s disk, or those of
+// [[obstacles]] (half-planes clipped to `box`).
+std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox& box);
 
 // The deformed structure coloured by |u| over the undeformed outline, the obstacle,
 // the contact zone in red, and a colour bar (the paper's Figs. 5–7).

@@ -23,10 +23,12 @@ Json to_json(const ObstacleParams& o) {
 }
 
 Json to_json(const FluidParams& f) {
-  return {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},   {"f", vec(f.f)},
+  Json j = {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},   {"f", vec(f.f)},
           {"Vmax", f.Vmax}, {"h", f.h},   {"mesh", f.mesh}, {"chi", f.chi}, {"factorization", f.factorization},
           {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
           {"band", f.band_box ? Json(*f.band_box) : Json(f.band)}, {"method", f.method}};
+  for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) j[kBoxSideKeys[k]] = f.sides[k];
+  return j;
 }
 
 Json to_json(const CouplingParams& k) {

@@ -89,6 +89,13 @@ Physical Surface("Omega_S") = {1}; Physical Curve("Gamma_D") = {4}; Physical Cur
 // The §7.2 case on the shipped fluid mesh (hF = 0.02), copied as box.msh.
 const std::string kBoxCase = "[structure]\nh = 0.03\n[fluid]\nmesh = \"box.msh\"\n";
 
+// The contact case with a fluid and [[obstacles]] instead of [obstacle], to be given
+// its obstacles (kDisk: one valid disk below the beam).
+const std::string kFsiObstacles =
+    replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") +
+    "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[fluid]\nh = 0.004\n";
+const std::string kDisk = "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\n";
+
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
 
 std::vector<BadInput> bad_inputs() {
@@ -181,10 +188,24 @@ std::vector<BadInput> bad_inputs() {
       {"obstacle_zero_normal", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -0.01]\nnormal = [0, 0]\n", "", {"obstacles[1].normal", "is zero"}},
       {"obstacle_unknown_key", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\ngamma = 0.8\n", "", {"obstacles[1].gamma", "not a known key"}},
       {"structure_starts_inside_an_obstacle", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = 0.0\nr = 0.005\n", "", {"inside an obstacle", "[[obstacles]]"}},
-      {"obstacles_with_a_fluid", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[fluid]\nh = 0.004\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\n", "", {"obstacles", "contact problem"}},
       {"obstacles_gamma_c_on_a_rectangle", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\n", "", {"contact.boundary = \"Gamma_C\"", "\"all\""}},
+      // [[obstacles]] as holes of the fluid box (SPEC §9).
+      {"fsi_obstacle_half_plane", kFsiObstacles + "[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -0.01]\nnormal = [0, 1]\n", "", {"obstacles[1].shape = \"half-plane\"", "contact problems only", "\"disk\" with a [fluid] section"}},
+      {"fsi_obstacles_overlap", kFsiObstacles + kDisk + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.035\ny0 = -0.012\nr = 0.005\n", "", {"case.toml: obstacles[2] overlaps obstacles[1]", "fluid.h/2 = 0.002 apart"}},
+      {"fsi_obstacles_too_close", kFsiObstacles + kDisk + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.0405\ny0 = -0.01\nr = 0.005\n", "", {"obstacles[2] comes within 0.0005 of obstacles[1]"}},
+      {"fsi_obstacle_across_the_box_bottom", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.498\nr = 0.005\n", "", {"obstacles[1].r = 0.005", "to the fluid box's bottom", "at least fluid.h/2"}},
+      {"fsi_obstacle_outside_the_box", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.6\ny0 = 0\nr = 0.005\n", "", {"obstacles[1].r", "right side x = fluid.L1"}},
+      {"fsi_obstacle_smaller_than_hF", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.003\n", "", {"fluid.h = 0.004 is larger than obstacles[1]'s radius", "obstacles[1].r = 0.003"}},
+      {"fsi_obstacles_with_a_fluid_mesh", kFsiObstacles + kDisk, "--set fluid.mesh=box.msh", {"fluid.mesh", "cannot be used with [[obstacles]]"}},
+      {"fsi_obstacles_body_fitted", kFsiObstacles + kDisk, "--set fluid.method=body-fitted", {"fluid.method = \"body-fitted\"", "[[obstacles]]", "\"penalised\""}},
       {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
       {"method_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=immersed", {"fluid.method", "body-fitted"}},
+      // The box sides (SPEC §10).
+      {"side_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.top=inlet", {"--set fluid.top: fluid.top = \"inlet\" is not a known choice", "\"wall\", \"inflow\", \"outflow\""}},
+      {"side_not_a_string", kValid + "[fluid]\nh = 0.004\nright = 1\n", "", {"case.toml: fluid.right must be a string"}},
+      {"inflow_without_outflow", kValid + "[fluid]\nh = 0.004\n", "--set fluid.bottom=wall", {"case.toml: fluid.top", "without an outflow side", "the inflow has nowhere to go", "up to a constant", "at least one of fluid.left, fluid.bottom, fluid.right, fluid.top = \"outflow\""}},
+      {"all_walls", kValid + "[fluid]\nh = 0.004\ntop = \"wall\"\nbottom = \"wall\"\n", "", {"case.toml: fluid.bottom", "left = \"wall\", bottom = \"wall\", right = \"wall\", top = \"wall\"", "up to a constant"}},
+      {"inflow_into_the_clamped_side", kValid + "[fluid]\nh = 0.004\n", "--set fluid.left=inflow", {"fluid.left = \"inflow\"", "Gamma_D", "\"wall\" or \"outflow\""}},
       {"omega_just_above_one", kValid + "[fluid]\n", "--set coupling.omega=1.0000001", {"coupling.omega = 1.0000001 is out of range", "(0, 1]"}},
       // Geometry that passed and then died in meshing (class 4).
       {"gamma_c_a_rounding_error_from_the_end", replace(replace(kValid, "r = 0.005", "r = 0.00625"), "gamma = 0.8", "gamma = 0.79999999999999"), "", {"obstacle.x0", "Gamma_C", "structure.h/20", "from the structure's end"}},
@@ -202,7 +223,7 @@ std::vector<BadInput> bad_inputs() {
       {"fluid_mesh_box_longer", kBoxCase, "--set fluid.L1=0.5", {"fluid.L1 = 0.5 contradicts fluid.mesh", "x = 0.41"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
       {"fluid_mesh_box_taller", kBoxCase, "--set fluid.H1=0.6", {"fluid.H1 = 0.6 contradicts fluid.mesh"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
       {"fluid_mesh_obstacle_elsewhere", kBoxCase, "--set obstacle.r=0.04", {"obstacle.r = 0.04 contradicts fluid.mesh", "Sigma_5"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
-      {"fluid_mesh_inflow_label_at_the_bottom", kBoxCase, "", {"fluid.mesh", "Sigma_4", "not on the top"},
+      {"fluid_mesh_inflow_label_at_the_bottom", kBoxCase, "", {"fluid.mesh", "Sigma_4", "not on the top", "(fluid.top = \"inflow\")"},
        {{"box.msh", replace(replace(replace(shipped("paper-7.2-box-h0.02.msh"), "1 2 \"Sigma_2\"", "1 2 \"Sigma_X\""), "1 4 \"Sigma_4\"", "1 4 \"Sigma_2\""), "1 2 \"Sigma_X\"", "1 2 \"Sigma_4\"")}}},
       // A user's .msh with a defect that used to pass silently (class 6): exit 2
       // naming the file and the defect (tests/mesh/ has one test per defect).

@@ -32,7 +32,7 @@ std::vector<Norms> sweep(double hF, const std::vector<double>& eps_values) {
   std::vector<Norms> out;
   for (double eps : eps_values) {
     PenalisedStokes stokes(*f.mesh, c.fluid->mu, eps, [&](const Point&) { return c.fluid->f; },
-                           paper_boundary_conditions(*f.mesh, *c.fluid));
+                           box_boundary_conditions(*f.mesh, *c.fluid));
     stokes.set_chi(chi);
     const FluidField field(*f.locator, stokes.solve());
     out.push_back({velocity_l2_over(field, chi_region), velocity_l2_over(field, structure)});

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -76,6 +77,44 @@ TEST(Case, TheBandIsAWidthOrABoxAndEpsRulesHaveAPower) {
   EXPECT_EQ(box.coupling.eps_power(), 0.0);
   EXPECT_EQ(box.fluid->size_near(), box.fluid->h);  // no band: hF at the structure
   for (const Case& c : {width, box}) EXPECT_EQ(to_toml(load_case_text(to_toml(c), "again.toml")), to_toml(c));
+}
+
+// SPEC §10 "Box sides": the paper's by default, each side set by its key, kept in
+// the resolved TOML and accepted by --set.
+TEST(Case, BoxSidesDefaultToThePapersAndRoundTrip) {
+  const Case paper = load_case("");
+  EXPECT_EQ(paper.fluid->sides, (std::array<std::string, 4>{"wall", "outflow", "wall", "inflow"}));
+  const Case channel = load_case("", {"fluid.left=outflow", "fluid.bottom=wall", "fluid.right=inflow", "fluid.top=wall"});
+  EXPECT_EQ(channel.fluid->sides, (std::array<std::string, 4>{"outflow", "wall", "inflow", "wall"}));
+  const std::string text = to_toml(channel);
+  EXPECT_NE(text.find("right = 'inflow'"), std::string::npos) << text;
+  EXPECT_EQ(load_case_text(text, "again.toml").fluid->sides, channel.fluid->sides);
+  const std::vector<std::string> keys = case_keys();
+  for (const char* side : kBoxSideKeys)
+    EXPECT_NE(std::find(keys.begin(), keys.end(), std::string("fluid.") + side), keys.end()) << side;
+}
+
+// Refused: an unknown condition, and a box without an outflow side (the pressure is
+// then fixed only up to a constant, and an inflow could not balance).
+TEST(Case, BoxSidesRefuseUnknownValuesAndBoxesWithoutAnOutflow) {
+  const auto message = [](const std::vector<std::string>& sets) {
+    try {
+      load_case("", sets);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({"fluid.left=open"}),
+            "--set fluid.left: fluid.left = \"open\" is not a known choice; allowed: \"wall\", \"inflow\", \"outflow\"");
+  const std::string closed = message({"fluid.bottom=wall"});
+  EXPECT_EQ(closed.rfind("(built-in paper-7.2 case): fluid.top leaves the fluid box without an outflow side", 0), 0u) << closed;
+  EXPECT_NE(closed.find("allowed: at least one of fluid.left, fluid.bottom, fluid.right, fluid.top = \"outflow\""),
+            std::string::npos) << closed;
+  const std::string walls = message({"fluid.bottom=wall", "fluid.top=wall"});
+  EXPECT_EQ(walls.rfind("--set fluid.bottom: fluid.bottom leaves", 0), 0u) << walls;
+  EXPECT_EQ(walls.find("the inflow"), std::string::npos) << walls;
+  EXPECT_EQ(message({"fluid.bottom=wall", "fluid.top=outflow"}), "no error");  // an outflow, no inflow
 }
 
 TEST(Case, IntegersAreAcceptedForRealKeys) {

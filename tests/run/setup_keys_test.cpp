@@ -23,7 +23,8 @@ std::string other_value(const std::string& key) {
       {"coupling.scheme", "aitken"},  {"contact.solver", "ipopt"},    {"output.dir", "elsewhere"},
       {"output.png", "false"},    {"output.vtu", "false"},            {"fluid.h_near", "0.005"},
       {"fluid.method", "body-fitted"}, {"coupling.eps_rule", "h^2"}, {"contact.gap", "normal"},
-      {"contact.boundary", "all"}};
+      {"contact.boundary", "all"}, {"fluid.left", "outflow"}, {"fluid.bottom", "wall"},
+      {"fluid.right", "outflow"}, {"fluid.top", "wall"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
@@ -36,6 +37,7 @@ std::string other_value(const std::string& key) {
 // is the key's own.
 std::vector<std::string> companions(const std::string& key) {
   if (key == "contact.boundary") return {"contact.gap=normal"};
+  if (key == "fluid.bottom") return {"fluid.right=outflow"};  // an outflow side remains
   return {};
 }
 
@@ -84,7 +86,7 @@ TEST(SetupKeys, TheInflowIsAppliedOnTheLabelSigma4) {
   f.L1 = 1.0;
   f.H1 = 0.5;  // not where Σ4 is
   f.Vmax = 2.0;
-  const FluidBoundaryConditions bc = paper_boundary_conditions(m, f);
+  const FluidBoundaryConditions bc = box_boundary_conditions(m, f);
   ASSERT_EQ(bc.dirichlet_values.size(), 1u);
   EXPECT_EQ(bc.dirichlet_values[0].first, top);
   EXPECT_DOUBLE_EQ(bc.dirichlet_values[0].second(m.vertices[2]).y(), -2.0);  // Vmax·4x(x − L1)/L1² at x = 1/2

@@ -1,0 +1,28 @@
+// summary.json's obstacles[i].force (SPEC §10 "Forces"): the force of the fluid on
+// each obstacle of [[obstacles]] in a coupled run, N per metre of depth, by the
+// residual (volume) method: the weak residual of the penalised momentum equation
+// (25) tested with φ_j e_c summed over the obstacle's hole Σ5_i (a function equal to
+// e_c on that hole's vertices, zero on every other Dirichlet side), with its sign
+// turned (fluid/stokes_residual.hpp: R is what the fluid receives). The penalty
+// (1/ε)∫χ v·w is part of the residual: R is then exactly the reaction of the
+// discrete system's removed rows, also where the structure covers part of a hole's
+// boundary (there it counts the fictitious fluid inside the structure, v ≈ 0).
+#pragma once
+
+#include "io/case.hpp"
+#include "run/fluid_setup.hpp"
+#include "run/summary.hpp"
+
+namespace fsi {
+
+// [{"force": [Fx, Fy]}, ...] in the case's order, from the last fluid solution (made
+// exact everywhere first); a force that cannot be computed (no solution, or its
+// completion failed) is null.
+Json obstacle_forces_json(const Case& c, FluidSetup& f);
+
+// The fluid's force on the hole labelled `label` of a solution computed with the
+// penalty `kappa` = χ/ε per triangle.
+Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,
+                 const Eigen::VectorXd& kappa);
+
+}  // namespace fsi
