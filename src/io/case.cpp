@@ -110,12 +110,15 @@ const std::set<std::string> kSections = {"structure", "obstacle", "obstacles", "
 
 // structure.shape and the files it names agree: one file, the one the shape reads.
 void check_shape_files(const StructureParams& p, const Origin& origin) {
-  const char* allowed = "shape = \"rectangle\" with neither file, \"mesh\" with structure.mesh, "
+  const char* allowed = "shape = \"rectangle\" or \"none\" with neither file, \"mesh\" with structure.mesh, "
                         "\"geo\" with structure.geo";
   if (!p.mesh.empty() && !p.geo.empty())
     fail(origin, "structure.geo", "and structure.mesh are both given", allowed);
   if (p.shape == "rectangle" && !(p.mesh.empty() && p.geo.empty()))
     fail(origin, "structure.shape", "= \"rectangle\" is generated from L and H, but structure." +
+                                        std::string(p.mesh.empty() ? "geo" : "mesh") + " is given", allowed);
+  if (p.shape == "none" && !(p.mesh.empty() && p.geo.empty()))
+    fail(origin, "structure.shape", "= \"none\" has no structure, but structure." +
                                         std::string(p.mesh.empty() ? "geo" : "mesh") + " is given", allowed);
   if (p.shape == "mesh" && p.mesh.empty())
     fail(origin, "structure.shape", "= \"mesh\" needs the file structure.mesh", allowed);
@@ -142,7 +145,8 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.h = s.number("h", p.h, kSize);
   p.mesh = resolve_path(s.text("mesh", ""), case_path);
   p.geo = resolve_path(s.text("geo", ""), case_path);
-  p.shape = s.choice("shape", !p.mesh.empty() ? "mesh" : !p.geo.empty() ? "geo" : "rectangle", {"rectangle", "mesh", "geo"});
+  p.shape = s.choice("shape", !p.mesh.empty() ? "mesh" : !p.geo.empty() ? "geo" : "rectangle",
+                     {"rectangle", "mesh", "geo", "none"});
   check_shape_files(p, origin);
   s.reject_unknown();
 }

@@ -252,7 +252,7 @@ void check_obstacles(const Case& c, const Origin& o) {
   if (!c.obstacles_given) return;
   if (c.obstacle_given)
     fail(o, "obstacles", "and [obstacle] are both given", "[obstacle] (the paper's disk) or [[obstacles]], not both");
-  if (c.contact.gap != "normal")
+  if (c.contact.gap != "normal" && c.structure.shape != "none")  // no structure: no contact
     fail(o, "contact.gap", "= \"" + c.contact.gap + "\" cannot use [[obstacles]] (eq. 15 is the graph of one disk)",
          "\"normal\" with [[obstacles]]");
   if (c.fluid) check_fluid_obstacles(c, o);
@@ -263,7 +263,26 @@ void check_obstacles(const Case& c, const Origin& o) {
 
 }  // namespace
 
+// structure.shape = "none": the fluid alone, in a penalised box (run/run_fluid.cpp).
+void check_no_structure(const Case& c, const Origin& o) {
+  const char* allowed = "structure.shape = \"none\" with a [fluid] section, fluid.method = \"penalised\", and a band given as a box";
+  if (!c.fluid) fail(o, "structure.shape", "= \"none\" leaves nothing to solve without a [fluid] section", allowed);
+  if (c.fluid->method != "penalised")
+    fail(o, "fluid.method", "= \"" + c.fluid->method + "\" meshes around a structure; structure.shape = \"none\" has none", allowed);
+  if (c.fluid->h_near > 0 && !c.fluid->band_box)
+    fail(o, "fluid.band", "= " + shortest(c.fluid->band) + " is a width around the structure; structure.shape = \"none\" has none",
+         "fluid.band = [x_min, y_min, x_max, y_max] with fluid.h_near, or fluid.h_near = 0");
+}
+
 void check_case(const Case& c, const Origin& origin) {
+  if (c.structure.shape == "none") {
+    check_no_structure(c, origin);
+    check_obstacles(c, origin);
+    check_fluid_band(c, origin);
+    check_fluid_sides(c, origin);
+    if (c.fluid->mesh.empty()) check_fluid_box(c, origin);
+    return;
+  }
   // With a mesh file or a script the structure's geometry is the mesh's, checked when
   // it is made (run/mesh_checks.cpp): L and H, if given, must then equal its extent.
   check_obstacles(c, origin);

@@ -23,8 +23,10 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f) {
     }
   }
   const Eigen::VectorXd kappa = f.stokes->last_solution_chi() / f.stokes->eps();
-  for (std::size_t i = 0; i < c.obstacles.size(); ++i) {
-    const int label = f.mesh->label("Sigma_5_" + std::to_string(i + 1));
+  // [[obstacles]]' holes Sigma_5_i, or [obstacle]'s one disk Sigma_5.
+  const std::size_t count = c.obstacles_given ? c.obstacles.size() : 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int label = f.mesh->label(c.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
     list.push_back({{"force", s ? point_json(hole_force(*f.mesh, c.fluid->mu, c.fluid->f, *s, label, kappa))
                                 : Json(nullptr)}});
   }

@@ -15,7 +15,7 @@
 
 namespace fsi {
 
-// [{"force": [Fx, Fy]}, ...] in the case's order, from the last fluid solution (made
+// [{"force": [Fx, Fy]}, ...] in the case's order ([obstacle]'s disk: one), from the last fluid solution (made
 // exact everywhere first); a force that cannot be computed (no solution, or its
 // completion failed) is null.
 Json obstacle_forces_json(const Case& c, FluidSetup& f);

@@ -41,7 +41,7 @@ void fail_writing(RunResult& r, const std::string& what) {
 Json summary_header(const Case& c) {
   Json j;
   j["name"] = c.name;
-  j["problem"] = !c.fluid ? "contact" : c.coupling.max_iterations == 0 ? "fluid" : "fsi";
+  j["problem"] = !c.fluid ? "contact" : c.coupling.max_iterations == 0 || c.structure.shape == "none" ? "fluid" : "fsi";
   j["parameters"] = to_json(c);
   return j;
 }

@@ -42,6 +42,10 @@ RunResult run_contact_case(const Case& c, const RunOptions& options);
 // around the structure at rest.
 RunResult run_fsi_case(const Case& c, const RunOptions& options);
 
+// structure.shape = "none" (run_fsi_case calls it): the fluid alone, no structure, and
+// the fluid's force on each obstacle.
+RunResult run_fluid_case(const Case& c, const RunOptions& options);
+
 // The same with fluid.method = "body-fitted" (run_fsi_case calls it): the fluid
 // remeshed around the deformed structure each pass, for configurations without contact.
 RunResult run_body_fitted_case(const Case& c, const RunOptions& options);

@@ -190,6 +190,7 @@ std::string fsi_report(const Case& c, const CouplingResult& result, const FluidN
 }  // namespace
 
 RunResult run_fsi_case(const Case& c, const RunOptions& options) {
+  if (c.structure.shape == "none") return run_fluid_case(c, options);
   if (c.fluid->method == "body-fitted") return run_body_fitted_case(c, options);
   PhaseTimes times;
   const Stopwatch total;

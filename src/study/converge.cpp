@@ -136,6 +136,9 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   const Case base = load_case(case_path, options.overrides);
   if (options.refine == "fluid" && !base.fluid)
     throw InputError("--refine fluid: " + base.source + " has no fluid to refine; allowed: all or structure");
+  if (base.structure.shape == "none")  // its quantities are the structure's
+    throw InputError(base.source + ": structure.shape = \"none\": converge studies the structure's quantities; allowed: "
+                     "a case with a structure (run the fluid alone level by level with fsicontact run)");
   ConvergeResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-converge" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
