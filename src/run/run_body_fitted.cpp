@@ -121,19 +121,8 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
   const Stopwatch total;
   SetupCache local_cache;
   SetupCache& cache = options.cache ? *options.cache : local_cache;
-  MeshStatistics s_stats;
-  {
-    ScopedPhase phase(times, "mesh");
-    s_stats = statistics(cache.structure_mesh(c));
-    fault_point("mesh");
-  }
-  StructureSetup* s_ptr = nullptr;
-  {
-    ScopedPhase phase(times, "structure");
-    s_ptr = &cache.structure(c);
-    fault_point("structure");
-  }
-  StructureSetup& s = *s_ptr;
+  const MeshStatistics s_stats = in_phase(times, "mesh", [&] { return statistics(cache.structure_mesh(c)); });
+  StructureSetup& s = *in_phase(times, "structure", [&] { return &cache.structure(c); });
   BodyFittedFluid fluid = body_fitted_fluid(c, s.mesh());
   const bool fluid_only = c.coupling.max_iterations == 0;
   BodyFittedStep alone;

@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "common/fault.hpp"
+#include "common/timer.hpp"
 #include "io/case.hpp"
 #include "run/summary.hpp"
 
@@ -52,6 +54,16 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options);
 
 // summary.json's first keys: name, problem ("contact", "fluid", "fsi"), parameters.
 Json summary_header(const Case& c);
+
+// make() timed as the phase `name` of `times`, then the fault-injection point of that
+// name (tests make a phase fail there): one set-up step of a run.
+template <class Make>
+auto in_phase(PhaseTimes& times, const char* name, Make&& make) {
+  ScopedPhase phase(times, name);
+  auto made = make();
+  fault_point(name);
+  return made;
+}
 
 class RunOutputs;
 // Writes the run's directory (run/output_dir.hpp): summary.json as "writing", then

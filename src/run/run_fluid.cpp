@@ -55,19 +55,8 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
   const Stopwatch total;
   SetupCache local_cache;
   SetupCache& cache = options.cache ? *options.cache : local_cache;
-  MeshStatistics stats;
-  {
-    ScopedPhase phase(times, "mesh");
-    stats = statistics(cache.fluid_mesh(c));
-    fault_point("mesh");
-  }
-  FluidSetup* f_ptr = nullptr;
-  {
-    ScopedPhase phase(times, "fluid");
-    f_ptr = &cache.fluid(c);
-    fault_point("fluid");
-  }
-  FluidSetup& f = *f_ptr;
+  const MeshStatistics stats = in_phase(times, "mesh", [&] { return statistics(cache.fluid_mesh(c)); });
+  FluidSetup& f = *in_phase(times, "fluid", [&] { return &cache.fluid(c); });
   const FluidSolution* fluid = nullptr;
   {
     ScopedPhase phase(times, "fluid");
