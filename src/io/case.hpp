@@ -41,7 +41,7 @@ struct ObstacleSpec {
   double x0 = 0, y0 = 0, r = 0;            // disk
   std::vector<Point> points;               // polygon: its corners, either orientation
   Point point = Point::Zero();             // half-plane: a point on its boundary
-  Point normal = Point::Zero();            // and its outward normal (unit)
+  Point normal = Point::Zero();            // and its outward normal (non-zero, as given)
 };
 
 // The box sides Σ1 … Σ4 by their keys fluid.left, bottom, right, top (SPEC §10 "Box

@@ -161,3 +161,26 @@ TEST(Case, FuzzRegressionsGiveACaseOrAnInputError) {
 
 }  // namespace
 }  // namespace fsi
+
+namespace fsi {
+namespace {
+
+// Every shipped case reloads to itself from its resolved TOML, bit for bit (the
+// contract fuzz_case checks; a half-plane's normal, normalised twice, broke it).
+TEST(Case, EveryShippedCaseRoundTripsThroughItsResolvedToml) {
+  int cases = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(FSICONTACT_SOURCE_DIR) + "/cases")) {
+    if (e.path().extension() != ".toml") continue;
+    const Case c = load_case(e.path().string());
+    const std::string resolved = to_toml(c);
+    EXPECT_EQ(to_toml(load_case_text(resolved, "resolved.toml")), resolved) << e.path();
+    ++cases;
+  }
+  EXPECT_GE(cases, 15);
+  const Case tilted = load_case_text("[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -1]\nnormal = [-0.2, 1.0]\n"
+                                     "[contact]\ngap = \"normal\"\nboundary = \"all\"\n", "t.toml");
+  EXPECT_EQ(tilted.obstacles[0].normal.x(), -0.2);  // as given
+}
+
+}  // namespace
+}  // namespace fsi
