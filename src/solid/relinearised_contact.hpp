@@ -7,9 +7,10 @@
 // constraint is a tangent half-plane, stricter than the obstacle itself, so the first
 // solution is feasible but held off along the tangent; the passes let it slide.
 // Measured: 6–12 QPs on §7.1 (disk), 8 on a beam over two disks, 2 on a half-plane.
-// Not for polygons yet: where a vertex's nearest feature is a corner the normal turns
-// with the position and the iteration cycles (a beam over a block's corner: the
-// change stalled at 1.4e-8 m after 200 passes, damped or not).
+// Polygons: where a vertex's nearest feature is a sharp corner the normal turns with
+// the position and the passes cycle; a polygon is therefore grown by a margin that
+// rounds its corners (solid/signed_distance.hpp): 3 passes on a block's corner and a
+// wedge's tip.
 #pragma once
 
 #include <Eigen/Core>
