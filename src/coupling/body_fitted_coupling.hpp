@@ -3,8 +3,8 @@
 //   mesh of D \ φ^k(Ω_S0) → Stokes, v = 0 on Γ_u → load by the residual method
 //   (body_fitted_fluid.hpp) → contact QP → ũ^{k+1},
 // stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}):
-// the same stopping test, relaxation schemes and records as FixedPointCoupling, whose
-// fluid step (χ, the penalised solve, eq. 33) is what this replaces. A pass whose QP
+// FixedPointLoop (fixed_point_loop.hpp) around this fluid's map H, as FixedPointCoupling
+// around the penalised one (χ, the penalised solve, eq. 33). A pass whose QP
 // finds contact is refused: the fluid between the structure and the obstacle
 // cannot be body-fitted.
 #pragma once
@@ -39,7 +39,6 @@ class BodyFittedCoupling {
   const BodyFittedStep* last_fluid() const { return last_fluid_.mesh ? &last_fluid_ : nullptr; }
 
  private:
-  void iterate(CouplingResult& result);
 
   Parts p_;
   double tol_;

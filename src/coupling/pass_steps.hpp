@@ -1,11 +1,10 @@
-// Steps both coupling loops take the same way (FixedPointCoupling, the penalised
-// fluid; BodyFittedCoupling, the body-fitted one): the first iterate, and the
+// Two steps of FixedPointLoop (fixed_point_loop.hpp): the first iterate, and the
 // relaxation after a pass that did not converge.
 #pragma once
 
 #include <Eigen/Core>
 
-#include "coupling/fixed_point.hpp"
+#include "coupling/coupling_result.hpp"
 #include "coupling/relaxation.hpp"
 #include "solid/contact_solver.hpp"
 

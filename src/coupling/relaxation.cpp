@@ -26,7 +26,11 @@ class ConstantRelaxation final : public Relaxation {
 class AitkenRelaxation final : public Relaxation {
  public:
   AitkenRelaxation(const RelaxationOptions& o, const Eigen::SparseMatrix<double>& M)
-      : omega_(o.omega0), omega_min_(o.omega_min), M_(M) {}
+      : omega_(o.omega0), omega0_(o.omega0), omega_min_(o.omega_min), M_(M) {}
+  void end_window() override {
+    omega_ = omega0_;
+    previous_r_.resize(0);
+  }
   Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
     const Eigen::VectorXd r = H_u - u;
     if (previous_r_.size() == r.size()) {
@@ -45,7 +49,7 @@ class AitkenRelaxation final : public Relaxation {
   std::string name() const override { return "aitken"; }
 
  private:
-  double omega_, omega_min_;
+  double omega_, omega0_, omega_min_;
   Eigen::SparseMatrix<double> M_;
   Eigen::VectorXd previous_r_;
 };
@@ -76,9 +80,11 @@ class IqnIlsRelaxation final : public Relaxation {
     if (previous_r_.size() == r.size()) {
       V_.push_front(r - previous_r_);
       W_.push_front(H_u - previous_H_);
+      window_of_.push_front(window_);
       if (static_cast<int>(V_.size()) > options_.max_columns) {
         V_.pop_back();
         W_.pop_back();
+        window_of_.pop_back();
       }
     }
     previous_r_ = r;
@@ -104,6 +110,15 @@ class IqnIlsRelaxation final : public Relaxation {
   }
   double omega() const override { return omega_; }
   std::string name() const override { return "iqn-ils"; }
+  // Columns are tagged with their window; those older than reused_windows go.
+  void end_window() override {
+    previous_r_.resize(0);
+    previous_H_.resize(0);
+    ++window_;
+    while (!window_of_.empty() && window_ - window_of_.back() > options_.reused_windows) {
+      V_.pop_back(), W_.pop_back(), window_of_.pop_back();
+    }
+  }
 
  private:
   // α = argmin ‖V α + r‖_M (the L²(Ω_S0) norm, M the consistent mass), by modified
@@ -132,9 +147,11 @@ class IqnIlsRelaxation final : public Relaxation {
     }
     // Drop the filtered columns from the history.
     std::deque<Eigen::VectorXd> V, W;
-    for (std::size_t j : kept) V.push_back(V_[j]), W.push_back(W_[j]);
+    std::deque<int> windows;
+    for (std::size_t j : kept) V.push_back(V_[j]), W.push_back(W_[j]), windows.push_back(window_of_[j]);
     V_.swap(V);
     W_.swap(W);
+    window_of_.swap(windows);
     const Eigen::Index n = static_cast<Eigen::Index>(Q.size());
     Eigen::VectorXd rhs(n);
     const Eigen::VectorXd wr = norm_.map(r);
@@ -150,6 +167,8 @@ class IqnIlsRelaxation final : public Relaxation {
   RelaxationOptions options_;
   MassNorm norm_;
   std::deque<Eigen::VectorXd> V_, W_;
+  std::deque<int> window_of_;  // the time window each column was formed in
+  int window_ = 0;
   Eigen::VectorXd previous_r_, previous_H_;
   double omega_ = 0;
 };

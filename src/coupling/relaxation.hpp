@@ -26,6 +26,12 @@ class Relaxation {
   virtual std::string name() const = 0;
   // How many updates left the feasible set and were projected back.
   int projections() const { return projections_; }
+  // The end of a time window (as preCICE's acceleration has it): the next call to next()
+  // starts a new fixed point, so no difference is formed across the windows' boundary.
+  // Constant: nothing; Aitken: ω back to ω0; IQN-ILS: the last residual forgotten, and
+  // the (V, W) columns kept for RelaxationOptions::reused_windows windows (0: dropped).
+  // The steady problem has one window and never calls it.
+  virtual void end_window() {}
 
   // Maps a displacement to the nearest feasible one (A_S-norm); set by the loop.
   std::function<Eigen::VectorXd(const Eigen::VectorXd&)> project;
@@ -39,6 +45,7 @@ struct RelaxationOptions {
   int max_columns = 5;          // IQN-ILS: kept difference pairs (chosen on Table 1, docs/validation.md)
   double filter = 1e-2;         // IQN-ILS: drop a column if its new part < filter·its norm
   double omega_min = 1e-2;      // Aitken: clamp to [omega_min, 1]
+  int reused_windows = 0;       // IQN-ILS: past windows whose columns end_window() keeps
 };
 
 // scheme: "constant" | "aitken" | "iqn-ils"; M: the inner product's matrix.

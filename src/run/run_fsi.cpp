@@ -103,7 +103,7 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   const Mesh& ref = s.mesh();
   const FluidForce force = fluid_force_of(c, ref);
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, assemble_vector_mass(ref));
-  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force, *relaxation},
+  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force}, *relaxation,
                           c.coupling.tol, c.coupling.max_iterations);
   loop.progress = progress;
   loop.complete_at_end = c.output.png || c.output.vtu;

@@ -100,9 +100,8 @@ Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr,
   Coupled out;
   out.M = assemble_vector_mass(s.mesh());
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, out.M);
-  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force,
-                           custom ? *custom : *relaxation},
-                          c.coupling.tol, c.coupling.max_iterations);
+  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force},
+                          custom ? *custom : *relaxation, c.coupling.tol, c.coupling.max_iterations);
   out.result = loop.run();
   const Eigen::VectorXd& u = out.result.structure.u;
   const int nv = s.mesh().num_vertices();

@@ -155,5 +155,49 @@ TEST(Relaxation, UnknownSchemeIsRejected) {
   EXPECT_THROW(make_relaxation("anderson", {}, identity(2)), std::invalid_argument);
 }
 
+// The end of a time window (Relaxation::end_window): the next step starts a new fixed
+// point. Aitken returns to ω0; IQN-ILS forgets its last residual and, unless told to
+// reuse them, its columns: its first step is then the constant one.
+TEST(Relaxation, AtAWindowsEndAitkenStartsAgainFromOmega0) {
+  const int n = 5;
+  const Eigen::MatrixXd A = -0.5 * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1, 2);
+  auto relax = make_relaxation("aitken", {.omega0 = 0.1}, identity(n));
+  Eigen::VectorXd u;
+  ASSERT_GT(iterations_to_converge(*relax, A, b, 1e-12, 50, u), 0);
+  ASSERT_NEAR(relax->omega(), 2.0 / 3.0, 1e-12);
+  relax->end_window();
+  const Eigen::VectorXd u0 = Eigen::VectorXd::Ones(n), H = A * u0 + 2 * b;  // the next window's map
+  EXPECT_EQ(relax->next(u0, H), Eigen::VectorXd(u0 + 0.1 * (H - u0)));
+  EXPECT_EQ(relax->omega(), 0.1);
+}
+
+TEST(Relaxation, AtAWindowsEndIqnIlsDropsOrReusesItsColumns) {
+  const int n = 8;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(-0.3, 0.3);
+  Eigen::MatrixXd A(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) A(i, j) = uniform(rng);
+  const Eigen::VectorXd b1 = Eigen::VectorXd::LinSpaced(n, 1, 2), b2 = Eigen::VectorXd::LinSpaced(n, -1, 3);
+  auto window_two = [&](int reused) {
+    auto relax = make_relaxation("iqn-ils", {.omega0 = 0.1, .max_columns = 20, .reused_windows = reused}, identity(n));
+    Eigen::VectorXd u;
+    EXPECT_GT(iterations_to_converge(*relax, A, b1, 1e-10, 100, u), 0);
+    relax->end_window();
+    if (reused == 0) {  // the first step of the new window: the constant one
+      const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(n), H = A * u0 + b2;
+      EXPECT_EQ(relax->next(u0, H), Eigen::VectorXd(u0 + 0.1 * (H - u0)));
+      relax->end_window();
+    }
+    return iterations_to_converge(*relax, A, b2, 1e-10, 100, u);
+  };
+  const int fresh = window_two(0), reusing = window_two(1);
+  EXPECT_GT(fresh, 0);
+  EXPECT_GT(reusing, 0);
+  // The same A in both windows: the kept columns already span its action.
+  EXPECT_LT(reusing, fresh) << reusing << " vs " << fresh;
+}
+
 }  // namespace
 }  // namespace fsi
