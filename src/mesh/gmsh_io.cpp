@@ -44,7 +44,7 @@ Mesh build_and_validate(RawMesh raw, double unit, std::vector<std::string> bound
 
 Mesh generate(const std::string& doing, const std::function<RawMesh()>& mesher, double unit,
               const std::vector<std::string>& boundary_groups, const std::string& domain_group,
-              const GmshLimits& limits) {
+              const GmshLimits& limits, const std::vector<std::string>& optional_groups = {}) {
   initialise_gmsh_once();
   const std::size_t memory = physical_memory();
   const std::vector<char> bytes = run_in_child(
@@ -52,7 +52,7 @@ Mesh generate(const std::string& doing, const std::function<RawMesh()>& mesher, 
       {doing, "it may use this machine's memory, " + std::to_string(memory >> 20) + " MB"},
       {limits.seconds, memory});
   try {
-    return build_and_validate(decode(bytes), unit, boundary_groups, domain_group);
+    return build_and_validate(decode(bytes), unit, boundary_groups, domain_group, optional_groups);
   } catch (const MeshError& e) {
     throw MeshError("Gmsh made an unusable mesh while " + doing + ": " + e.what());
   }
@@ -169,14 +169,10 @@ Mesh mesh_geo_script(const std::string& path, double h, double max_triangles,
                      const std::vector<std::string>& boundary_groups, const std::vector<std::string>& optional_groups,
                      const std::string& domain_group, const GmshLimits& limits) {
   const ScriptGeometry g{path, read_geo_script(path), h, max_triangles};
-  initialise_gmsh_once();
-  const std::size_t memory = physical_memory();
   try {
-    const std::vector<char> bytes = run_in_child(
-        [&] { return encode(mesh_script_in_gmsh(g)); },
-        {"running and meshing it", "it may use this machine's memory, " + std::to_string(memory >> 20) + " MB"},
-        {limits.seconds, memory});
-    return build_and_validate(decode(bytes), 1, boundary_groups, domain_group, optional_groups);
+    return generate(
+        "running and meshing it", [&] { return mesh_script_in_gmsh(g); }, 1, boundary_groups, domain_group, limits,
+        optional_groups);
   } catch (const MeshError& e) {
     throw MeshError(path + ": " + e.what());
   }

@@ -95,4 +95,48 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   return s;
 }
 
+const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::VectorXd& chi) {
+  stokes.set_chi(chi);
+  const FluidSolution* solved = nullptr;
+  try {
+    solved = &stokes.solve();
+  } catch (const SolverFailure& e) {  // named by its phase, as the coupling names its own
+    throw SolverFailure(std::string("the fluid solve failed: ") + e.what());
+  }
+  const FluidSolution& v = *solved;
+  if (!v.v1.allFinite() || !v.v2.allFinite() || !v.p.allFinite() || !v.bubble.allFinite())
+    throw SolverFailure("the fluid solve gave a non-finite velocity or pressure");
+  return v;
+}
+
+Json fluid_json(const PenalisedStokes& stokes) {
+  const FluidTiming& t = stokes.timing();
+  Json j = {{"method", "penalised"},  // fluid.method (run_body_fitted.cpp writes the other)
+            {"unknowns", stokes.unknowns()},
+            {"nonzeros", stokes.nonzeros()},
+            {"solver", stokes.solver_name()},
+            {"analyses", t.analyses},  // symbolic analyses: 1 per run, 0 for a sweep row reusing it
+            {"factorizations", t.factorizations},
+            {"reused_solutions", t.reused},
+            {"assembly_s", t.assembly},
+            {"analysis_s", t.analysis},  // included in factorization_s
+            {"factorization_s", t.factorization},
+            {"solve_s", t.solve}};
+  j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
+  // The substructured solve: far-field factorisations (one per near region; their
+  // time is part of factorization_s), the expansions (part of solve_s), the last
+  // region's size.
+  j["far_field_factorizations"] = t.regions;
+  j["far_factorization_s"] = t.far_factorization;
+  j["expansion_s"] = t.expansion;
+  // Far fields over fluid.keep_far_factors_mb are refactorised for each expansion.
+  j["far_factor_mb"] = stokes.region() ? stokes.region()->far_factor_mb() : 0.0;  // the region in use
+  j["far_field_refactorizations"] = t.far_refactorizations;
+  if (const RegionSchurSolver* r = stokes.region()) {
+    j["near_unknowns"] = r->near_unknowns();
+    j["interface_unknowns"] = r->interface_unknowns();
+  }
+  return j;
+}
+
 }  // namespace fsi

@@ -11,6 +11,7 @@
 #include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "io/case.hpp"
+#include "run/summary.hpp"
 
 namespace fsi {
 
@@ -37,5 +38,14 @@ Mesh make_fluid_mesh(const Case& c);
 FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f);
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
+
+// One solve for `chi` (the fluid alone: around the structure at rest, or with no
+// structure), exact everywhere; SolverFailure "the fluid solve failed: ..." or on a
+// non-finite field.
+const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::VectorXd& chi);
+
+// summary.json's "fluid" of the penalised method: sizes, solver, factorisations and
+// their timings, the substructured solve's region.
+Json fluid_json(const PenalisedStokes& stokes);
 
 }  // namespace fsi

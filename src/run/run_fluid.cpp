@@ -19,19 +19,6 @@
 namespace fsi {
 namespace {
 
-const FluidSolution& solve_without_structure(FluidSetup& f) {
-  f.stokes->set_chi(Eigen::VectorXd::Zero(f.mesh->num_triangles()));
-  const FluidSolution* s = nullptr;
-  try {
-    s = &f.stokes->solve();  // near_only = false: exact everywhere
-  } catch (const SolverFailure& e) {
-    throw SolverFailure(std::string("the fluid solve failed: ") + e.what());
-  }
-  if (!s->v1.allFinite() || !s->v2.allFinite() || !s->p.allFinite() || !s->bubble.allFinite())
-    throw SolverFailure("the fluid solve gave a non-finite velocity or pressure");
-  return *s;
-}
-
 std::string fluid_report(const Case& c, const PenalisedStokes& stokes, const MeshStatistics& stats, const Json& forces) {
   const FluidTiming& t = stokes.timing();
   char text[512];
@@ -60,7 +47,7 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
   const FluidSolution* fluid = nullptr;
   {
     ScopedPhase phase(times, "fluid");
-    fluid = &solve_without_structure(f);
+    fluid = &solve_fluid_once(*f.stokes, Eigen::VectorXd::Zero(f.mesh->num_triangles()));  // χ = 0: no structure
   }
   RunResult r;
   Json& j = r.summary;
@@ -70,12 +57,7 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
   j["status"] = "converged";
   j["iterations"] = 0;
   j["obstacles"] = obstacle_forces_json(c, f);
-  j["fluid"] = {{"method", "penalised"},
-                {"unknowns", f.stokes->unknowns()},
-                {"solver", f.stokes->solver_name()},
-                {"assembly_s", f.stokes->timing().assembly},
-                {"factorization_s", f.stokes->timing().factorization},
-                {"solve_s", f.stokes->timing().solve}};
+  j["fluid"] = fluid_json(*f.stokes);
   r.report = fluid_report(c, *f.stokes, stats, j["obstacles"]);
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");

@@ -30,36 +30,6 @@
 namespace fsi {
 namespace {
 
-Json fluid_json(const PenalisedStokes& stokes) {
-  const FluidTiming& t = stokes.timing();
-  Json j = {{"method", "penalised"},  // fluid.method (run_body_fitted.cpp writes the other)
-            {"unknowns", stokes.unknowns()},
-            {"nonzeros", stokes.nonzeros()},
-            {"solver", stokes.solver_name()},
-            {"analyses", t.analyses},  // symbolic analyses: 1 per run, 0 for a sweep row reusing it
-            {"factorizations", t.factorizations},
-            {"reused_solutions", t.reused},
-            {"assembly_s", t.assembly},
-            {"analysis_s", t.analysis},  // included in factorization_s
-            {"factorization_s", t.factorization},
-            {"solve_s", t.solve}};
-  j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
-  // The substructured solve: far-field factorisations (one per near region; their
-  // time is part of factorization_s), the expansions (part of solve_s), the last
-  // region's size.
-  j["far_field_factorizations"] = t.regions;
-  j["far_factorization_s"] = t.far_factorization;
-  j["expansion_s"] = t.expansion;
-  // Far fields over fluid.keep_far_factors_mb are refactorised for each expansion.
-  j["far_factor_mb"] = stokes.region() ? stokes.region()->far_factor_mb() : 0.0;  // the region in use
-  j["far_field_refactorizations"] = t.far_refactorizations;
-  if (const RegionSchurSolver* r = stokes.region()) {
-    j["near_unknowns"] = r->near_unknowns();
-    j["interface_unknowns"] = r->interface_unknowns();
-  }
-  return j;
-}
-
 // ‖v_h‖ over the fluid triangles where χ = 1 (the region the penalty acts on).
 double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const Eigen::VectorXd& chi) {
   Mesh region;
@@ -79,16 +49,7 @@ FluidForce fluid_force_of(const Case& c, const Mesh& reference) {
 // structure (eq. 33 at u = 0).
 CouplingResult solve_fluid_alone(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTimes& times) {
   const Stopwatch clock;
-  f.stokes->set_chi((*f.chi)(s.mesh()));
-  const FluidSolution* solved = nullptr;
-  try {
-    solved = &f.stokes->solve();
-  } catch (const SolverFailure& e) {  // named by its phase, as the coupling names its own
-    throw SolverFailure(std::string("the fluid solve failed: ") + e.what());
-  }
-  const FluidSolution& v = *solved;
-  if (!v.v1.allFinite() || !v.v2.allFinite() || !v.p.allFinite() || !v.bubble.allFinite())
-    throw SolverFailure("the fluid solve gave a non-finite velocity or pressure");
+  const FluidSolution& v = solve_fluid_once(*f.stokes, (*f.chi)(s.mesh()));
   times.add("fluid", clock.elapsed());
   CouplingResult result;
   result.structure = s.solver->at_rest();
