@@ -61,7 +61,7 @@ void BM_ChiAreaFraction(benchmark::State& state) { BM_Chi(state, "area-fraction"
 
 void BM_SampleAtDeformedVertices(benchmark::State& state) {
   Scene& s = scene(static_cast<int>(state.range(0)));
-  const FluidField field(*s.fluid.locator, s.fluid.stokes->last_solution());
+  const FluidField field(*s.fluid.locator, s.fluid.stokes->solution());
   for (auto _ : state)
     benchmark::DoNotOptimize(sample_at_deformed_vertices(field, s.structure.mesh(), s.u).v.data());
   counters(state, s);
@@ -69,7 +69,7 @@ void BM_SampleAtDeformedVertices(benchmark::State& state) {
 
 void BM_FluidForce(benchmark::State& state) {
   Scene& s = scene(static_cast<int>(state.range(0)));
-  const FluidField field(*s.fluid.locator, s.fluid.stokes->last_solution());
+  const FluidField field(*s.fluid.locator, s.fluid.stokes->solution());
   const SampledFluid sampled = sample_at_deformed_vertices(field, s.structure.mesh(), s.u);
   const Point f_F = s.c.fluid->f;
   const FluidForce force(s.structure.mesh(), s.c.fluid->mu, s.c.coupling.eps,
@@ -80,7 +80,7 @@ void BM_FluidForce(benchmark::State& state) {
 
 void BM_VelocityL2OverStructure(benchmark::State& state) {
   Scene& s = scene(static_cast<int>(state.range(0)));
-  const FluidField field(*s.fluid.locator, s.fluid.stokes->last_solution());
+  const FluidField field(*s.fluid.locator, s.fluid.stokes->solution());
   for (auto _ : state) benchmark::DoNotOptimize(velocity_l2_over(field, s.deformed));
   counters(state, s);
 }

@@ -50,33 +50,7 @@ CouplingResult FixedPointCoupling::run() {
   H.relinearise = relinearise;
   FixedPointLoop loop(H, relaxation_, M_, tol_, max_iterations_);
   loop.progress = progress;
-  set_region_hint();
-  CouplingResult result = loop.run(initial);
-  // The outputs need the fields everywhere: the last fluid solve's deferred
-  // expansion to the far field.
-  if (complete_at_end && p_.fluid.has_solution()) {
-    try {
-      p_.fluid.complete();
-    } catch (const SolverFailure& e) {
-      if (result.failure.empty()) result.failure = std::string("the fluid solve (far field) failed: ") + e.what();
-    }
-  }
-  return result;
-}
-
-// Where the structure is likely to go: under its applied loads alone (with contact),
-// it moves as it will with the fluid's force added, in the paper's cases. The fluid's
-// first near region covers that too (one far-field factorisation instead of two); a
-// poor guess costs only a larger region or a second one.
-void FixedPointCoupling::set_region_hint() {
-  const Mesh& reference = p_.structure.mesh();
-  const int nv = reference.num_vertices();
-  try {
-    const ContactSolution guess = p_.structure.solve(p_.b_applied);
-    if (guess.u.allFinite())
-      p_.fluid.set_region_hint(p_.chi(displaced(reference, guess.u.head(nv), guess.u.tail(nv))));
-  } catch (const QpError&) {  // no hint: the region grows when needed; pass 1's QP will say why
-  }
+  return loop.run(initial);
 }
 
 }  // namespace fsi

@@ -2,8 +2,7 @@
 //   χ from φ^k(Ω_S0) → fluid solve → force (eq. 33) → contact QP → ũ^{k+1},
 //   stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}):
 // FixedPointLoop (fixed_point_loop.hpp) around the map H of the penalised fluid
-// (PenalisedMap, penalised_map.hpp). The pieces it calls are built once by the caller;
-// this façade adds the fluid's region hint before the loop and its far field after.
+// (PenalisedMap, penalised_map.hpp). The pieces it calls are built once by the caller.
 #pragma once
 
 #include <functional>
@@ -24,10 +23,6 @@ class FixedPointCoupling {
 
   // One line per iteration (for stderr).
   std::function<void(const std::string&)> progress;
-  // Whether run() ends by expanding the last fluid solution to the far field
-  // (PenalisedStokes::complete()): the outputs that draw or write the whole fluid
-  // need it; a run without them can leave it exact near the structure only.
-  bool complete_at_end = true;
   // Called with u^k before each pass's QP: contact.gap = "normal" re-linearises the
   // constraint about the current state there, once per pass (SPEC §9). Empty: the
   // constraint stays as built (the paper's eq. 15).
@@ -44,8 +39,6 @@ class FixedPointCoupling {
   CouplingResult run();
 
  private:
-  void set_region_hint();
-
   Parts p_;
   Relaxation& relaxation_;
   double tol_;

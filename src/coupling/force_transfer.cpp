@@ -6,11 +6,30 @@ namespace fsi {
 
 SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
                                          const Eigen::VectorXd& u) {
+  return sample_at(field, locate_deformed_vertices(field.locator(), reference, u));
+}
+
+std::vector<Location> locate_deformed_vertices(const PointLocator& fluid, const Mesh& reference,
+                                               const Eigen::VectorXd& u) {
   const int nv = reference.num_vertices();
+  std::vector<Location> where;
+  where.reserve(nv);
+  for (int i = 0; i < nv; ++i) where.push_back(fluid.locate_or_nearest(reference.vertices[i] + Point(u[i], u[nv + i])));
+  return where;
+}
+
+std::vector<int> triangles_of(const std::vector<Location>& where) {
+  std::vector<int> triangles;
+  triangles.reserve(where.size());
+  for (const Location& w : where) triangles.push_back(w.triangle);
+  return triangles;
+}
+
+SampledFluid sample_at(const FluidField& field, const std::vector<Location>& where) {
+  const int nv = static_cast<int>(where.size());
   SampledFluid s{Eigen::VectorXd(2 * nv), Eigen::VectorXd(nv)};
   for (int i = 0; i < nv; ++i) {
-    const Point x = reference.vertices[i] + Point(u[i], u[nv + i]);
-    const FluidValue value = field.at(x);
+    const FluidValue value = field.at(where[i]);
     s.v[i] = value.v.x();
     s.v[nv + i] = value.v.y();
     s.p[i] = value.p;

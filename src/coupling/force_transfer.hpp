@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <vector>
 
 #include "fluid/fluid_field.hpp"
 #include "mesh/mesh.hpp"
@@ -22,6 +23,12 @@ struct SampledFluid {
 };
 SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
                                          const Eigen::VectorXd& u);
+// The same in two steps: where the deformed vertices lie in the fluid mesh (the
+// triangles a fluid solve must be exact on), then the fields there.
+std::vector<Location> locate_deformed_vertices(const PointLocator& fluid, const Mesh& reference,
+                                               const Eigen::VectorXd& u);
+std::vector<int> triangles_of(const std::vector<Location>& where);
+SampledFluid sample_at(const FluidField& field, const std::vector<Location>& where);
 
 class FluidForce {
  public:

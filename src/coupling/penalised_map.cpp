@@ -15,22 +15,6 @@ namespace {
 
 }  // namespace
 
-// Step 3: b_S from v∘φ^k, p∘φ^k (eq. 33).
-Eigen::VectorXd PenalisedMap::load(const FluidSolution& fluid, const Eigen::VectorXd& u, int k) {
-  const Mesh& reference = p_.structure.mesh();
-  auto at = [&](const FluidSolution& f) {
-    const FluidField field(p_.fluid_locator, f);
-    return Eigen::VectorXd(p_.b_applied + p_.force(sample_at_deformed_vertices(field, reference, u), u));
-  };
-  return guarded("the force transfer", k, [&] {
-    try {
-      return at(fluid);
-    } catch (const FieldNotComputed&) {  // a vertex samples the far field: expand
-      return at(p_.fluid.complete());
-    }
-  });
-}
-
 MapValue PenalisedMap::operator()(const Eigen::VectorXd& u, int k, const ContactSolution* warm, IterationRecord& rec) {
   const Mesh& reference = p_.structure.mesh();
   const int nv = reference.num_vertices();
@@ -41,20 +25,28 @@ MapValue PenalisedMap::operator()(const Eigen::VectorXd& u, int k, const Contact
     rec.chi_triangles = static_cast<int>((chi.array() > 0).count());
     rec.t_chi = clock.elapsed();
   }
+  // Steps 2–3: the fluid solve, exact (at least) where the deformed vertices sample
+  // it, then b_S from v∘φ^k, p∘φ^k (eq. 33).
+  const Stopwatch located;
+  const std::vector<Location> where = locate_deformed_vertices(p_.fluid_locator, reference, u);
+  const double t_locate = located.elapsed();
   const FluidSolution* fluid = nullptr;
   {
     const Stopwatch clock;
     const int reused_before = p_.fluid.timing().reused;
-    fluid = guarded("the fluid solve", k, [&] { return &p_.fluid.solve(/*near_only=*/true); });
+    const std::vector<int> sampled = triangles_of(where);
+    fluid = guarded("the fluid solve", k, [&] { return &p_.fluid.solve(&sampled); });
     rec.fluid_reused = p_.fluid.timing().reused > reused_before;
     rec.t_fluid = clock.elapsed();
   }
   Eigen::VectorXd b_S;
   {
     const Stopwatch clock;
-    b_S = load(*fluid, u, k);
+    b_S = guarded("the force transfer", k, [&] {
+      return Eigen::VectorXd(p_.b_applied + p_.force(sample_at(FluidField(p_.fluid_locator, *fluid), where), u));
+    });
     if (!b_S.allFinite()) fail("the force transfer", k, "non-finite load on the structure");
-    rec.t_transfer = clock.elapsed();
+    rec.t_transfer = clock.elapsed() + t_locate;
   }
   MapValue value;
   {

@@ -1,6 +1,6 @@
 // H for the penalised fictitious domain (the paper, §6 steps 2–4): χ of φ^k(Ω_S0), the
-// penalised Stokes solve (near the structure only, expanded when a vertex samples the
-// far field), the force of eq. (33) at the deformed vertices, the contact QP.
+// penalised Stokes solve (exact where the deformed vertices sample it: the fluid
+// decides what that costs), the force of eq. (33) at those vertices, the contact QP.
 #pragma once
 
 #include <functional>
@@ -32,7 +32,6 @@ class PenalisedMap final : public CoupledMap {
   ElasticContactSolver& structure() override { return p_.structure; }
 
  private:
-  Eigen::VectorXd load(const FluidSolution& fluid, const Eigen::VectorXd& u, int k);
   Parts p_;
 };
 

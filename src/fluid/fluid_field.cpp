@@ -1,5 +1,6 @@
 #include "fluid/fluid_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -86,6 +87,18 @@ double velocity_l2_over(const FluidField& field, const Mesh& region) {
     }
   }
   return std::sqrt(sum);
+}
+
+std::vector<int> triangles_meeting(const PointLocator& fluid, const Mesh& region) {
+  std::vector<int> met;
+  for (const auto& rt : region.triangles) {
+    const Point &a = region.vertices[rt[0]], &b = region.vertices[rt[1]], &c = region.vertices[rt[2]];
+    const std::vector<int> box = fluid.triangles_in_box(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c));
+    met.insert(met.end(), box.begin(), box.end());
+  }
+  std::sort(met.begin(), met.end());
+  met.erase(std::unique(met.begin(), met.end()), met.end());
+  return met;
 }
 
 }  // namespace fsi

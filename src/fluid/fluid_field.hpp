@@ -5,14 +5,16 @@
 
 #include <Eigen/Core>
 #include <stdexcept>
+#include <vector>
 
 #include "fluid/penalised_stokes.hpp"
 #include "fem/point_locator.hpp"
 
 namespace fsi {
 
-// A point whose fluid triangle lies outside the part of D where a near-only solution
-// (PenalisedStokes::solve(true)) is exact: complete() the solution first.
+// A point whose fluid triangle lies outside the part of D where a solution is exact
+// (FluidSolution::exact_on): a bug of the caller, who names the triangles it reads
+// to PenalisedStokes::solve or ::solution.
 struct FieldNotComputed : std::logic_error {
   using std::logic_error::logic_error;
 };
@@ -42,5 +44,8 @@ class FluidField {
 // exactly: its triangles are cut along the fluid mesh and each piece integrated by a
 // rule exact for |v_h|² (degree 6).
 double velocity_l2_over(const FluidField& field, const Mesh& region);
+// The fluid triangles velocity_l2_over(field, region) may read (those meeting the
+// bounding box of a region triangle), sorted, each once.
+std::vector<int> triangles_meeting(const PointLocator& fluid, const Mesh& region);
 
 }  // namespace fsi

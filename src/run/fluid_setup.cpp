@@ -90,8 +90,8 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   const Point f_F = f.f;
   s.stokes = std::make_unique<PenalisedStokes>(*s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; },
                                                box_boundary_conditions(*s.mesh, f));
-  s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur);
-  s.stokes->set_far_factor_budget(f.keep_far_factors_mb);
+  s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur,
+                              f.keep_far_factors_mb);
   return s;
 }
 

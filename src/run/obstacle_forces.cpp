@@ -17,7 +17,7 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f) {
   const FluidSolution* s = nullptr;
   if (f.stokes->has_solution()) {
     try {
-      s = &f.stokes->complete();  // the far field too: a hole may lie outside the near region
+      s = &f.stokes->solution();  // the far field too: a hole may lie outside the near region
     } catch (const SolverFailure&) {
       s = nullptr;
     }

@@ -22,6 +22,7 @@
 #include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
 #include "run/probes.hpp"
+#include "run/region_hint.hpp"
 #include "run/run_case.hpp"
 #include "run/setup_cache.hpp"
 #include "run/structure_outputs.hpp"
@@ -67,7 +68,6 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force}, *relaxation,
                           c.coupling.tol, c.coupling.max_iterations);
   loop.progress = progress;
-  loop.complete_at_end = c.output.png || c.output.vtu;
   if (initial) loop.initial = *initial;
   const ContactGap& gap = *s.gap;
   if (gap.normal()) {
@@ -76,7 +76,17 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
     gap.relinearise(*s.solver, Eigen::VectorXd::Zero(2 * ref.num_vertices()));
     loop.relinearise = [&gap, &s](const Eigen::VectorXd& u) { gap.relinearise(*s.solver, u); };
   }
+  expect_structure_under_loads(s, f);
   CouplingResult result = loop.run();
+  // The outputs that draw or write the whole fluid need the last solution everywhere
+  // (the substructured solve leaves the far field until asked).
+  if ((c.output.png || c.output.vtu) && f.stokes->has_solution()) {
+    try {
+      f.stokes->solution();
+    } catch (const SolverFailure& e) {
+      if (result.failure.empty()) result.failure = std::string("the fluid solve (far field) failed: ") + e.what();
+    }
+  }
   for (const auto& r : result.history) {
     times.add("fluid", r.t_fluid);
     times.add("structure", r.t_structure);
@@ -87,8 +97,9 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
 }
 
 // ‖v_h‖ over the deformed structure and over χ = 1. The norms read the fields in the
-// structure only, which a near-only solution holds; if the structure reaches beyond
-// it, the solution is completed first. `failure` says why they are missing.
+// fluid triangles those meet only, which a solution exact near the structure holds;
+// if the structure reaches beyond it, the solution is completed first. `failure`
+// says why they are missing.
 struct FluidNorms {
   double v = NAN, v_chi = NAN;
   std::string failure;
@@ -97,20 +108,16 @@ struct FluidNorms {
 FluidNorms fluid_norms(FluidSetup& f, const Mesh& deformed) {
   FluidNorms n;
   if (!f.stokes->has_solution()) return n;
-  auto compute = [&] {
-    const FluidField field(*f.locator, f.stokes->last_solution());
-    n.v = velocity_l2_over(field, deformed);
-    n.v_chi = velocity_l2_on_chi(field, *f.mesh, f.stokes->last_solution_chi());
-  };
+  const Eigen::VectorXd& chi = f.stokes->last_solution_chi();
+  std::vector<int> read = triangles_meeting(*f.locator, deformed);
+  for (int t = 0; t < f.mesh->num_triangles(); ++t)
+    if (chi[t] >= 1.0) read.push_back(t);
   try {
-    compute();
-  } catch (const FieldNotComputed&) {
-    try {
-      f.stokes->complete();
-      compute();
-    } catch (const SolverFailure& e) {
-      n = FluidNorms{NAN, NAN, e.what()};
-    }
+    const FluidField field(*f.locator, f.stokes->solution(&read));
+    n.v = velocity_l2_over(field, deformed);
+    n.v_chi = velocity_l2_on_chi(field, *f.mesh, chi);
+  } catch (const SolverFailure& e) {
+    n.failure = e.what();
   }
   return n;
 }
@@ -251,16 +258,20 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   r.exit_status = !result.failure.empty() ? 1 : result.interrupted ? interrupted_exit_status() : result.converged ? 0 : 3;
   if (!result.failure.empty()) r.failure = result.failure + " (the last good state is written in " + c.output.dir + "/)";
 
-  // Outputs: the fields where they exist everywhere (a near-only solution whose
-  // expansion failed draws nothing).
-  const FluidSolution& fluid = f.stokes->last_solution();
-  const bool has_fluid = f.stokes->has_solution() && fluid.exact_on == nullptr;
+  // Outputs: the fields where they exist everywhere (a solution exact near the
+  // structure only, whose expansion failed, draws nothing).
+  const FluidSolution* fluid = nullptr;
+  if (f.stokes->has_solution() && (c.output.png || c.output.vtu)) try {
+      fluid = &f.stokes->solution();
+    } catch (const SolverFailure&) {  // said in result.failure by couple()
+    }
+  const bool has_fluid = fluid != nullptr;
   const std::vector<int> contact_vertices = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
     if (c.output.vtu && has_fluid) {
       const bool fluid_vtu =
-          out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, fluid, f.stokes->last_solution_chi()); });
+          out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
       if (!fluid_only) {
         const bool structure_vtu =
             out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
@@ -276,7 +287,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
                                : (std::to_string(result.iterations) + " iterations" +
                                   (result.converged ? "" : " (not converged)")).c_str());
       out.write(fluid_only ? "fluid.png" : "fsi.png", [&](const std::string& p) {
-        write_fluid_png(p, c, *f.mesh, fluid, deformed, contact_vertices, c.name + ": fluid velocity magnitude", note);
+        write_fluid_png(p, c, *f.mesh, *fluid, deformed, contact_vertices, c.name + ": fluid velocity magnitude", note);
       });
       if (!fluid_only)
         out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });

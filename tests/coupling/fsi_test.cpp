@@ -12,6 +12,7 @@
 #include "io/case.hpp"
 #include "qp/active_set_solver.hpp"
 #include "run/fluid_setup.hpp"
+#include "run/region_hint.hpp"
 #include "run/structure_setup.hpp"
 
 namespace fsi {
@@ -102,10 +103,11 @@ Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr,
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, out.M);
   FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force},
                           custom ? *custom : *relaxation, c.coupling.tol, c.coupling.max_iterations);
+  expect_structure_under_loads(s, f);  // as run_fsi_case: solve 1 is this guess
   out.result = loop.run();
   const Eigen::VectorXd& u = out.result.structure.u;
   const int nv = s.mesh().num_vertices();
-  const FluidField field(*f.locator, f.stokes->last_solution());
+  const FluidField field(*f.locator, f.stokes->solution());
   out.v_norm = velocity_l2_over(field, displaced(s.mesh(), u.head(nv), u.tail(nv)));
   Mesh chi_region;
   chi_region.vertices = f.mesh->vertices;

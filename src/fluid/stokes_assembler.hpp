@@ -1,0 +1,109 @@
+// The discrete penalised Stokes problem of the mini element (paper eqs. 25–26, SPEC
+// §3) on the free dofs: the prescribed velocities, the condensed element of each
+// triangle for a penalty κ = χ/ε, the assembled K and rhs (updated only where χ
+// changed), and the fields from a solution vector. How K x = rhs is solved is not
+// its business: that is a StokesSolveStrategy's (stokes_strategy.hpp).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "fluid/mini_element.hpp"
+#include "fluid/region_schur.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+using VectorField = std::function<Point(const Point&)>;
+
+struct FluidBoundaryConditions {
+  std::vector<int> dirichlet_labels;                 // velocity prescribed here
+  VectorField g = [](const Point&) { return Point(0, 0); };  // its value
+  // A value of its own on some of those labels (the inflow on Σ4): boundary
+  // conditions belong to labels, never to coordinates. At a vertex on two labels the
+  // later label in dirichlet_labels decides.
+  std::vector<std::pair<int, VectorField>> dirichlet_values;
+  std::vector<std::pair<int, VectorField>> tractions;  // σ n = h on these labels
+};
+
+// The discrete fluid state: P1 parts at the vertices, bubble coefficients per triangle.
+struct FluidSolution {
+  Eigen::VectorXd v1, v2, p;
+  Eigen::Matrix2Xd bubble;
+  // Null: the fields are the solution everywhere. Otherwise only on the triangles t
+  // with (*exact_on)[t] (a solve that deferred the far field, SubstructuredSolve);
+  // FluidField refuses to evaluate elsewhere (FieldNotComputed).
+  const std::vector<char>* exact_on = nullptr;
+};
+
+// Local dof k (0..8 = v1×3, v2×3, p×3) of triangle `tri` → full dof index.
+inline int fluid_dof(const std::array<int, 3>& tri, int k, int nv) {
+  return (k / 3) * nv + tri[k % 3];
+}
+
+class StokesAssembler {
+ public:
+  StokesAssembler(const Mesh& mesh, double mu, const VectorField& f, const FluidBoundaryConditions& bc);
+
+  const Mesh& mesh() const { return mesh_; }
+  double mu() const { return mu_; }
+  int unknowns() const { return static_cast<int>(free_.size()); }
+  long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
+
+  // K and rhs for χ and ε over all triangles.
+  void assemble_full(const Eigen::VectorXd& chi, double eps);
+  // The same, re-assembling only the triangles whose χ changed since the last call
+  // (see the definition for when it assembles all of them instead).
+  void assemble(const Eigen::VectorXd& chi, double eps);
+  // The next assemble() assembles every triangle (a new run: its numbers must not
+  // depend on the round-off of the last run's updates).
+  void forget_assembly() { assembled_ = false; }
+  const Eigen::SparseMatrix<double>& matrix() const { return K_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
+
+  // Triangle t's unknowns (−1 where prescribed) and its condensed element for the
+  // penalty κ = χ_t/ε, prescribed columns lifted to the load.
+  std::array<int, 9> element_dofs(int t) const;
+  ElementSystem element_system(int t, double kappa) const;
+  const Eigen::VectorXd& traction_load() const { return traction_load_; }  // ∫ h·w
+
+  // The fields of the reduced solution x computed with χ and ε, everywhere.
+  void fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps, FluidSolution& out) const;
+  // The prescribed values and zero elsewhere (a solution about to be filled in part).
+  void prescribed_fields(FluidSolution& out) const;
+  // Writes the reduced values x_part of unknowns `reduced[k]` into `out`.
+  void scatter(const std::vector<int>& reduced, const Eigen::VectorXd& x_part, FluidSolution& out) const;
+  // Triangle t's bubble coefficients from its vertex values in `out` (penalty κ).
+  void recover_bubble(int t, double kappa, FluidSolution& out) const;
+
+  // A fill-reducing order of the unknowns (position of each reduced dof), computed
+  // once: METIS nested dissection of the vertex graph.
+  const std::vector<int>& dof_rank();
+
+ private:
+  void build_whole_pattern();
+  void add_element(int t, double kappa, double sign);
+
+  const Mesh& mesh_;
+  double mu_;
+  std::vector<ElementLoad> loads_;
+  std::vector<P1Triangle> geometry_;
+  Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)
+  std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed
+  std::vector<int> free_;              // reduced index → full dof
+  std::vector<int> slot_;              // 81 per triangle: position in K_.valuePtr(), −1 if not free-free
+  long nonzeros_ = 0;
+  std::vector<int> dof_rank_;
+  Eigen::VectorXd traction_load_;      // ∫ h·w on the reduced dofs
+  Eigen::SparseMatrix<double> K_;
+  Eigen::VectorXd rhs_;
+  bool assembled_ = false;
+  Eigen::VectorXd assembled_chi_;      // χ of the values now in K_ and rhs_
+  double assembled_eps_ = 0;
+  int updates_since_full_ = 0;
+};
+
+}  // namespace fsi

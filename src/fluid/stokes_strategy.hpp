@@ -1,0 +1,120 @@
+// How the penalised Stokes system K(χ, ε) x = b of a StokesAssembler is solved
+// (PenalisedStokes chooses one, fluid.factorization):
+// - WholeSolve: K assembled (updated where χ changed) and refactorised whole;
+// - SubstructuredSolve: the far field, where χ = 0, factorised once per near region
+//   and condensed onto it (RegionSchurSolver); per χ only the near region is
+//   factorised, and the far field's values are expanded only when asked for.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fluid/region_schur.hpp"
+#include "fluid/sparse_solver.hpp"
+#include "fluid/stokes_assembler.hpp"
+
+namespace fsi {
+
+struct FluidTiming {
+  double assembly = 0, factorization = 0, solve = 0;
+  double analysis = 0;  // the one symbolic analysis, part of `factorization`
+  int analyses = 0, factorizations = 0, reused = 0;  // reused: χ unchanged, previous solution returned
+  // Substructured solves (RegionSchurSolver): the far-field factorisations (one per
+  // near region, part of `factorization`) and the expansions (part of `solve`).
+  double far_factorization = 0, expansion = 0;
+  int regions = 0;
+  int far_refactorizations = 0;  // expansions that refactorised a released far field
+};
+
+// The triangles where a solution's fields will be read (null: everywhere).
+using SampledTriangles = const std::vector<int>*;
+
+class StokesSolveStrategy {
+ public:
+  virtual ~StokesSolveStrategy() = default;
+  // Each strategy writes one solution, its owner's (given to its constructor).
+  // The solution for χ and ε, exact at least on `sampled`. Throws SolverFailure (a
+  // failed or too inaccurate factorisation) with the last solution kept, exact
+  // everywhere it was but where SubstructuredSolve::build_near_region says.
+  virtual void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) = 0;
+  // The last solution made exact on `sampled` too.
+  virtual void extend(SampledTriangles /*sampled*/) {}
+  // Before ε changes: what the last solution still needs of the factorisations it
+  // came from.
+  virtual void settle() {}
+  // Where χ is expected to go (per triangle; empty: nowhere known), e.g. the
+  // structure under its applied loads alone.
+  virtual void expect(Eigen::VectorXd /*chi_hint*/) {}
+  // A new run (what it keeps for the next one: see the strategy).
+  virtual void new_run() {}
+  virtual std::string name() const = 0;
+  virtual const RegionSchurSolver* region() const { return nullptr; }
+};
+
+class WholeSolve final : public StokesSolveStrategy {
+ public:
+  WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out);
+  void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) override;
+  std::string name() const override { return solver_->name(); }
+  void new_run() override { assembler_.forget_assembly(); }
+
+ private:
+  StokesAssembler& assembler_;
+  std::unique_ptr<SparseDirectSolver> solver_;
+  FluidTiming& timing_;
+  FluidSolution& out_;
+  bool analysed_ = false;
+};
+
+class SubstructuredSolve final : public StokesSolveStrategy {
+ public:
+  // Far fields whose factorisation needs more than far_factor_budget_mb (MUMPS's
+  // estimate) are not kept: each expansion refactorises them. INFINITY: keep all.
+  SubstructuredSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out,
+                     double far_factor_budget_mb);
+  void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) override;
+  void extend(SampledTriangles sampled) override;
+  void settle() override;
+  // The first near region also covers the hint, so that a structure moving there
+  // does not force a second far-field factorisation. A region kept from before that
+  // does not cover it is dropped, so that the next one does.
+  void expect(Eigen::VectorXd chi_hint) override;
+  // The near region and its far-field factorisation are kept (χ = 0 there, so they
+  // hold for any ε): a sweep's next row reuses them if its hint lies inside.
+  void new_run() override;
+  std::string name() const override { return whole_.name() + "+schur"; }
+  const RegionSchurSolver* region() const override { return region_.get(); }
+
+ private:
+  void solve_near(const Eigen::VectorXd& chi, double eps);
+  void expand();
+  bool exact_on(SampledTriangles sampled) const;
+  bool near_region_covers(const Eigen::VectorXd& chi) const;
+  void build_near_region(const Eigen::VectorXd& chi, double eps);
+  void drop_region();
+
+  StokesAssembler& assembler_;
+  WholeSolve whole_;  // when the near region would be most of D, or χ = 0
+  FluidTiming& timing_;
+  FluidSolution& out_;
+  double far_factor_budget_mb_;
+  std::unique_ptr<RegionSchurSolver> region_;
+  // Where the last solution is exact when its region was replaced before it was
+  // completed (that region's far factors released: completing it would have cost a
+  // far-field factorisation, and only a failed solve right after would need it).
+  std::vector<char> stale_mask_;
+  Eigen::VectorXd hint_;                      // see expect()
+  double margin_ = 0;                         // the near region: χ's support's box grown by this
+  std::vector<char> interior_vertex_;         // vertices whose triangles are all near
+  bool too_large_ = false;                    // the near region would be most of D: solve whole
+  // The last solution is exact on the near region only; its χ and ε, for the
+  // expansion (and the bubbles it recovers).
+  bool pending_expansion_ = false;
+  Eigen::VectorXd pending_chi_;
+  double pending_eps_ = 0;
+};
+
+}  // namespace fsi

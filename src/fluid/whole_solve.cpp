@@ -1,0 +1,46 @@
+#include "common/errors.hpp"
+#include "common/timer.hpp"
+#include "fluid/stokes_strategy.hpp"
+
+namespace fsi {
+
+WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out)
+    : assembler_(assembler), solver_(make_sparse_solver(solver)), timing_(timing), out_(out) {}
+
+// Assembles K (incrementally), factorises all of it (one symbolic analysis for the
+// run: the pattern never changes), solves.
+void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles) {
+  {
+    const Stopwatch clock;
+    assembler_.assemble(chi, eps);
+    timing_.assembly += clock.elapsed();
+  }
+  const Eigen::SparseMatrix<double>& K = assembler_.matrix();
+  const Eigen::VectorXd& rhs = assembler_.rhs();
+  {
+    const Stopwatch clock;
+    if (!analysed_) {
+      solver_->analyze(K);
+      analysed_ = true;
+      timing_.analysis += clock.elapsed();
+      ++timing_.analyses;
+    }
+    solver_->factorize(K);
+    timing_.factorization += clock.elapsed();
+    ++timing_.factorizations;
+  }
+  const Stopwatch clock;
+  const Eigen::VectorXd x = solver_->solve(rhs);
+  if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
+  // A nearly singular matrix can factorise without a zero pivot and give garbage:
+  // one product with K (~1% of a factorisation) catches it. The solvers reach
+  // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
+  const double residual = (K * x - rhs).norm(), scale = rhs.norm();
+  if (!(residual <= 1e-8 * scale))
+    throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
+                        ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
+  assembler_.fields(x, chi, eps, out_);
+  timing_.solve += clock.elapsed();
+}
+
+}  // namespace fsi
