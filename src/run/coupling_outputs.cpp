@@ -2,7 +2,9 @@
 
 #include <iomanip>
 
+#include "common/interrupt.hpp"
 #include "io/atomic_file.hpp"
+#include "solid/elasticity.hpp"
 
 namespace fsi {
 
@@ -29,6 +31,22 @@ const char* status_of(const CouplingResult& r) {
          : r.interrupted    ? "interrupted"
          : r.converged      ? "converged"
                             : "iteration limit";
+}
+
+int exit_status_of(const CouplingResult& r) {
+  return !r.failure.empty() ? 1 : r.interrupted ? interrupted_exit_status() : r.converged ? 0 : 3;
+}
+
+RunMeasures coupled_measures(const Case& c, const CouplingResult& r, bool fluid_only) {
+  RunMeasures m;
+  m.converged = r.converged;
+  m.status = status_of(r);
+  m.failure = r.failure;
+  m.convergence_warning = convergence_warning(r, c.coupling.tol);
+  m.iterations = r.iterations;
+  if (!fluid_only) m.stop = RunMeasures::Stop{r.iterations - 1, r.final_increment, r.final_norm};
+  m.displacement = RunMeasures::Displacement{max_displacement(r.structure.u), component(r.structure.u, 1).minCoeff()};
+  return m;
 }
 
 }  // namespace fsi

@@ -155,49 +155,35 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
 
   const Eigen::VectorXd& u = result.structure.u;
   const Mesh deformed = displaced(s.mesh(), component(u, 0), component(u, 1));
-  const double max_u = max_displacement(u);
-  if (result.failure.empty() && !std::isfinite(max_u))
+  if (result.failure.empty() && !std::isfinite(max_displacement(u)))
     result.failure = "the final displacement is not finite";
   if (!result.failure.empty()) result.converged = false;
-  const MeshStatistics f_stats = last ? statistics(*last->mesh) : MeshStatistics{};
 
   RunResult r;
   r.displacement = u;
+  RunMeasures& m = r.measures = coupled_measures(c, result, fluid_only);
+  m.structure_mesh = s_stats;
+  m.fluid_mesh = last ? statistics(*last->mesh) : MeshStatistics{};  // the last pass's mesh
+  if (!fluid_only) m.contact = summarize_contact(*s.solver, result.structure);
   Json& j = r.summary;
   j = summary_header(c);
   j["initial_state"] = options.initial_displacement ? "given" : "rest";
-  j["mesh"] = {{"structure", to_json(s_stats)},
-               {"fluid", to_json(f_stats)}};  // fluid: the last pass's mesh
-  j["converged"] = result.converged;
-  j["status"] = status_of(result);
-  if (!result.failure.empty()) j["failure"] = result.failure;
-  const std::string warning = convergence_warning(result, c.coupling.tol);
-  if (!warning.empty()) j["convergence_warning"] = warning;
-  j["iterations"] = result.iterations;
-  if (!fluid_only) {
-    j["paper_k"] = result.iterations - 1;
-    j["final_increment_l2"] = result.final_increment;
-    j["final_norm_l2"] = result.final_norm;
-  }
-  j["max_displacement"] = max_u;
-  j["min_displacement_y"] = component(u, 1).minCoeff();
+  j["mesh"] = {{"structure", to_json(m.structure_mesh)}, {"fluid", to_json(m.fluid_mesh)}};
+  add_measures(j, m);
   j["tip_displacement"] = tip_displacement_json(c, s.mesh(), u);
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] =
       point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
-    j["contact"] = to_json(summarize_contact(*s.solver, result.structure));
+    j["contact"] = to_json(*m.contact);
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme},
                        {"omega0", c.coupling.omega},
                        {"projections", result.projections}};
   }
   j["fluid"] = fluid_json(result, last);
-  r.report = report(c, result, max_u, f_stats, fluid_only);
-  r.exit_status = !result.failure.empty() ? 1
-                  : result.interrupted    ? interrupted_exit_status()
-                  : result.converged      ? 0
-                                          : 3;
+  r.report = report(c, result, m.displacement->max, m.fluid_mesh, fluid_only);
+  r.exit_status = exit_status_of(result);
   if (!result.failure.empty())
     r.failure = result.failure + " (the last good state is written in " + c.output.dir + "/)";
 
@@ -239,8 +225,7 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       write_atomically(p, [&](std::ostream& o) { o << to_toml(c); });
     });
   };
-  write_outputs(c, r, files,
-                [&](Json& summary) { summary["timing_s"] = timing_json(times, total.elapsed()); });
+  write_outputs(c, r, files, [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;
 }
 

@@ -16,10 +16,11 @@ RunResult failed_run(const Case& c, const std::string& failure) {
   r.exit_status = 1;
   r.failure = failure;
   r.report = c.name + ": failed: " + failure;
+  r.measures.failure = failure;  // and status "failed", nothing measured
   Json j = summary_header(c);
   j["converged"] = false;
   j["status"] = "failed";
-  j["failure"] = failure;
+  j["failure"] = failure;  // no "iterations": none ran to the end
   r.summary = j;
   try {
     RunOutputs out(c.output.dir);

@@ -8,6 +8,7 @@
 #include "common/fault.hpp"
 #include "common/timer.hpp"
 #include "io/case.hpp"
+#include "run/run_measures.hpp"
 #include "run/summary.hpp"
 
 namespace fsi {
@@ -26,6 +27,7 @@ struct RunResult {
   // SIGINT / SIGTERM / SIGHUP.
   int exit_status = 0;
   Json summary;
+  RunMeasures measures;  // what summary.json's headline keys were written from
   std::string report;   // a paragraph for the user (the numbers, even after a failure)
   std::string failure;  // exit status 1: what failed, naming the phase
   Eigen::VectorXd displacement;  // the final ũ (2nv; empty if none): a restart's u⁰

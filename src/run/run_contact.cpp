@@ -71,16 +71,19 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   const double max_u = max_displacement(solution.u);
 
   RunResult r;
+  RunMeasures& m = r.measures;
+  m.structure_mesh = stats;
+  m.converged = true;
+  m.status = "converged";
+  m.iterations = solution.qp.iterations;
+  m.displacement = RunMeasures::Displacement{max_u, u2.minCoeff()};
+  m.contact = contact;
   Json& j = r.summary;
   j = summary_header(c);
   j["mesh"] = {{"structure", to_json(stats)}};
-  j["converged"] = true;
-  j["status"] = "converged";
+  add_measures(j, m);
   j["solver"] = s.qp->name();
-  j["iterations"] = solution.qp.iterations;
   j["qp_status"] = solution.qp.status;
-  j["max_displacement"] = max_u;
-  j["min_displacement_y"] = u2.minCoeff();
   j["tip_displacement"] = tip_displacement_json(c, s.mesh(), solution.u);
   j["contact"] = to_json(contact);
   add_gap_summary(j["contact"], c, s, solution);
@@ -96,7 +99,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
         if (c.output.png) out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, solution); });
         out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
       },
-      [&](Json& summary) { summary["timing_s"] = timing_json(times, total.elapsed()); });
+      [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;
 }
 

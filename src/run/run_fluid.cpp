@@ -50,12 +50,14 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
     fluid = &solve_fluid_once(*f.stokes, Eigen::VectorXd::Zero(f.mesh->num_triangles()));  // χ = 0: no structure
   }
   RunResult r;
+  RunMeasures& m = r.measures;
+  m.fluid_mesh = stats;
+  m.converged = true;
+  m.status = "converged";
   Json& j = r.summary;
   j = summary_header(c);
   j["mesh"] = {{"fluid", to_json(stats)}};
-  j["converged"] = true;
-  j["status"] = "converged";
-  j["iterations"] = 0;
+  add_measures(j, m);
   j["obstacles"] = obstacle_forces_json(c, f);
   j["fluid"] = fluid_json(*f.stokes);
   r.report = fluid_report(c, *f.stokes, stats, j["obstacles"]);
@@ -70,7 +72,7 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
       });
     out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
   };
-  write_outputs(c, r, files, [&](Json& summary) { summary["timing_s"] = timing_json(times, total.elapsed()); });
+  write_outputs(c, r, files, [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;
 }
 

@@ -122,13 +122,13 @@ FluidNorms fluid_norms(FluidSetup& f, const Mesh& deformed) {
   return n;
 }
 
-}  // namespace
 
-namespace {
-
-std::string fsi_report(const Case& c, const CouplingResult& result, const FluidNorms& n, double max_u,
-                       const ContactSummary& cs, const MeshStatistics& s_stats, const MeshStatistics& f_stats,
+std::string fsi_report(const Case& c, const CouplingResult& result, const RunMeasures& m,
                        const PenalisedStokes& stokes, bool fluid_only) {
+  const RunMeasures::FluidInStructure& n = *m.fluid_in_structure;
+  const MeshStatistics &s_stats = m.structure_mesh, &f_stats = m.fluid_mesh;
+  const ContactSummary cs = m.contact.value_or(ContactSummary{});
+  const double max_u = m.displacement->max;
   char text[1024];
   if (fluid_only) {
     const FluidTiming& t = stokes.timing();
@@ -150,152 +150,147 @@ std::string fsi_report(const Case& c, const CouplingResult& result, const FluidN
                 c.coupling.scheme.c_str(), result.final_increment, c.coupling.tol, n.v, n.v / c.coupling.eps, max_u,
                 cs.active_nodes, zone.c_str(), f_stats.triangles, s_stats.triangles, c.output.dir.c_str());
   std::string report = text;
-  const std::string warning = convergence_warning(result, c.coupling.tol);
-  if (!warning.empty()) report += " Warning: " + warning + ".";
+  if (!m.convergence_warning.empty()) report += " Warning: " + m.convergence_warning + ".";
   return report;
+}
+
+
+// Set up: the meshes, the structure, fluid.band's box (around the structure's
+// load-alone solution: after the structure) and the fluid, each timed as its phase.
+struct FsiSetup {
+  StructureSetup& s;
+  FluidSetup& f;
+  std::optional<std::array<double, 4>> band;
+  MeshStatistics s_stats, f_stats;
+};
+
+FsiSetup set_up(const Case& c, SetupCache& cache, PhaseTimes& times) {
+  const MeshStatistics s_stats = in_phase(times, "mesh", [&] { return statistics(cache.structure_mesh(c)); });
+  StructureSetup& s = *in_phase(times, "structure", [&] { return &cache.structure(c); });
+  const auto band = in_phase(times, "mesh", [&] { return cache.band(c); });
+  const MeshStatistics f_stats = in_phase(times, "mesh", [&] { return statistics(cache.fluid_mesh(c)); });
+  FluidSetup& f = *in_phase(times, "fluid", [&] { return &cache.fluid(c); });
+  return {s, f, band, s_stats, f_stats};
+}
+
+// Measure: the final state (ũ: the solution if converged; after a failure the last
+// good one) and the last successful fluid solution. A converged run with a quantity
+// it cannot state is a failure, not an answer (set in `result`).
+RunMeasures measure(const Case& c, FsiSetup& su, CouplingResult& result, const Mesh& deformed, bool fluid_only) {
+  const FluidNorms norms = fluid_norms(su.f, deformed);
+  const double max_u = max_displacement(result.structure.u);
+  if (result.failure.empty() && !(std::isfinite(norms.v) && std::isfinite(norms.v_chi) && std::isfinite(max_u)))
+    result.failure = "the final state is not finite (|v| in the structure " + std::to_string(norms.v) +
+                     ", max displacement " + std::to_string(max_u) + ")" +
+                     (norms.failure.empty() ? "" : ": " + norms.failure);
+  if (!result.failure.empty()) result.converged = false;
+  RunMeasures m = coupled_measures(c, result, fluid_only);
+  m.structure_mesh = su.s_stats, m.fluid_mesh = su.f_stats;
+  m.fluid_in_structure = RunMeasures::FluidInStructure{norms.v, norms.v / c.coupling.eps, norms.v_chi};
+  if (!fluid_only) m.contact = summarize_contact(*su.s.solver, result.structure);
+  return m;
+}
+
+// Summarise: summary.json's keys (SPEC §8, §9, §10).
+Json fsi_summary(const Case& c, FsiSetup& su, const CouplingResult& result, const RunMeasures& m,
+                 const Mesh& deformed, const RunOptions& options, bool fluid_only) {
+  Json j = summary_header(c);
+  j["mesh"] = {{"structure", to_json(m.structure_mesh)}, {"fluid", to_json(m.fluid_mesh)}};
+  j["initial_state"] = options.initial_displacement ? "given" : "rest";
+  if (su.band) {
+    j["mesh"]["fluid"]["h_near"] = c.fluid->h_near;
+    j["mesh"]["fluid"]["band_box"] = *su.band;
+    j["mesh"]["fluid"]["band_warning"] =
+        inside_band(deformed, *su.band, c.fluid->h_near)
+            ? Json(nullptr)
+            : Json("the structure's final configuration leaves the band refined to fluid.h_near: widen fluid.band");
+  }
+  add_measures(j, m);
+  const StructureSetup& s = su.s;
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), result.structure.u);
+  j["structure_force"] = point_json(resultant(result.fluid_load));
+  j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
+  if (!fluid_only) {
+    j["contact"] = to_json(*m.contact);
+    add_gap_summary(j["contact"], c, s, result.structure);
+    j["kkt"] = to_json(result.structure.qp.kkt);
+    j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
+  }
+  if (c.obstacles_given) j["obstacles"] = obstacle_forces_json(c, su.f);  // the fluid's force on each (SPEC §10)
+  j["fluid"] = fluid_json(*su.f.stokes);
+  return j;
+}
+
+// Write: the fields where they exist everywhere (a solution exact near the
+// structure only, whose expansion failed, draws nothing), history.csv, case.toml.
+void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const CouplingResult& result,
+                     const Mesh& deformed, bool fluid_only) {
+  StructureSetup& s = su.s;
+  FluidSetup& f = su.f;
+  const FluidSolution* fluid = nullptr;
+  if (f.stokes->has_solution() && (c.output.png || c.output.vtu)) try {
+      fluid = &f.stokes->solution();
+    } catch (const SolverFailure&) {  // said in result.failure by couple()
+    }
+  if (c.output.vtu && fluid) {
+    const bool fluid_vtu =
+        out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
+    if (!fluid_only) {
+      const bool structure_vtu =
+          out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
+      if (fluid_vtu && structure_vtu)  // never a .pvd that names a missing file
+        out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
+    }
+  }
+  if (c.output.png && fluid) {
+    char note[256];
+    std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s", c.coupling.eps,
+                  c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h, c.structure.h,
+                  fluid_only ? "structure at rest"
+                             : (std::to_string(result.iterations) + " iterations" +
+                                (result.converged ? "" : " (not converged)")).c_str());
+    const std::vector<int> contact_vertices = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
+    out.write(fluid_only ? "fluid.png" : "fsi.png", [&](const std::string& p) {
+      write_fluid_png(p, c, *f.mesh, *fluid, deformed, contact_vertices, c.name + ": fluid velocity magnitude", note);
+    });
+    if (!fluid_only)
+      out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
+  }
+  if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history, false); });
+  out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
 }
 
 }  // namespace
 
+// Set up → solve → measure → summarise → write (the shape of a deal.II tutorial's run()).
 RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   if (c.structure.shape == "none") return run_fluid_case(c, options);
   if (c.fluid->method == "body-fitted") return run_body_fitted_case(c, options);
   PhaseTimes times;
   const Stopwatch total;
   SetupCache local_cache;
-  SetupCache& cache = options.cache ? *options.cache : local_cache;
-  MeshStatistics s_stats, f_stats;
-  {
-    ScopedPhase phase(times, "mesh");
-    s_stats = statistics(cache.structure_mesh(c));
-  }
-  StructureSetup* s_ptr = nullptr;
-  {
-    ScopedPhase phase(times, "structure");
-    s_ptr = &cache.structure(c);  // no QP progress lines: one per iteration would swamp stderr
-    fault_point("structure");
-  }
-  std::optional<std::array<double, 4>> band;
-  {
-    // After the structure: fluid.band's width is taken around its load-alone solution
-    // (one QP, counted here).
-    ScopedPhase phase(times, "mesh");
-    band = cache.band(c);
-    f_stats = statistics(cache.fluid_mesh(c));
-    fault_point("mesh");
-  }
-  FluidSetup* f_ptr = nullptr;
-  {
-    ScopedPhase phase(times, "fluid");
-    f_ptr = &cache.fluid(c);
-    fault_point("fluid");
-  }
-  StructureSetup& s = *s_ptr;
-  FluidSetup& f = *f_ptr;
+  FsiSetup su = set_up(c, options.cache ? *options.cache : local_cache, times);
   const bool fluid_only = c.coupling.max_iterations == 0;
   auto progress = [&options](const std::string& line) {
     if (options.progress) options.progress(line);
   };
-  CouplingResult result = fluid_only ? solve_fluid_alone(c, s, f, times) : couple(c, s, f, times, progress, options.initial_displacement);
+  CouplingResult result = fluid_only ? solve_fluid_alone(c, su.s, su.f, times)
+                                     : couple(c, su.s, su.f, times, progress, options.initial_displacement);
 
-  // The final state: ũ (the solution if converged; after a failure the last good
-  // one) and the last successful fluid solution.
   const Eigen::VectorXd& u = result.structure.u;
-  const Eigen::VectorXd u1 = component(u, 0), u2 = component(u, 1);
-  const Mesh deformed = displaced(s.mesh(), u1, u2);
-  const FluidNorms norms = fluid_norms(f, deformed);
-  const double max_u = max_displacement(u);
-  // A converged run with a quantity it cannot state is a failure, not an answer.
-  if (result.failure.empty() && !(std::isfinite(norms.v) && std::isfinite(norms.v_chi) && std::isfinite(max_u)))
-    result.failure = "the final state is not finite (|v| in the structure " + std::to_string(norms.v) +
-                     ", max displacement " + std::to_string(max_u) + ")" +
-                     (norms.failure.empty() ? "" : ": " + norms.failure);
-  if (!result.failure.empty()) result.converged = false;
-  const ContactSummary cs = fluid_only ? ContactSummary{} : summarize_contact(*s.solver, result.structure);
-
+  const Mesh deformed = displaced(su.s.mesh(), component(u, 0), component(u, 1));
   RunResult r;
+  r.measures = measure(c, su, result, deformed, fluid_only);
   r.displacement = u;
-  Json& j = r.summary;
-  j = summary_header(c);
-  j["mesh"] = {{"structure", to_json(s_stats)}, {"fluid", to_json(f_stats)}};
-  j["initial_state"] = options.initial_displacement ? "given" : "rest";
-  if (band) {
-    j["mesh"]["fluid"]["h_near"] = c.fluid->h_near;
-    j["mesh"]["fluid"]["band_box"] = *band;
-    j["mesh"]["fluid"]["band_warning"] =
-        inside_band(deformed, *band, c.fluid->h_near)
-            ? Json(nullptr)
-            : Json("the structure's final configuration leaves the band refined to fluid.h_near: widen fluid.band");
-  }
-  j["converged"] = result.converged;
-  j["status"] = status_of(result);
-  if (!result.failure.empty()) j["failure"] = result.failure;
-  const std::string warning = convergence_warning(result, c.coupling.tol);
-  if (!warning.empty()) j["convergence_warning"] = warning;
-  j["iterations"] = result.iterations;
-  if (!fluid_only) {
-    j["paper_k"] = result.iterations - 1;  // the paper's counter k at the stop (§6)
-    j["final_increment_l2"] = result.final_increment;
-    j["final_norm_l2"] = result.final_norm;  // ‖ũ‖_{L²(Ω_S0)}: the scale tol is measured against
-  }
-  j["fluid_velocity_l2_in_structure"] = norms.v;
-  j["fluid_velocity_l2_in_structure_over_eps"] = norms.v / c.coupling.eps;
-  j["fluid_velocity_l2_on_chi"] = norms.v_chi;
-  j["max_displacement"] = max_u;
-  j["min_displacement_y"] = u2.minCoeff();
-  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), u);
-  j["structure_force"] = point_json(resultant(result.fluid_load));
-  j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
-  if (!fluid_only) {
-    j["contact"] = to_json(cs);
-    add_gap_summary(j["contact"], c, s, result.structure);
-    j["kkt"] = to_json(result.structure.qp.kkt);
-    j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
-  }
-  if (c.obstacles_given) j["obstacles"] = obstacle_forces_json(c, f);  // the fluid's force on each (SPEC §10)
-  j["fluid"] = fluid_json(*f.stokes);
-  r.report = fsi_report(c, result, norms, max_u, cs, s_stats, f_stats, *f.stokes, fluid_only);
-  r.exit_status = !result.failure.empty() ? 1 : result.interrupted ? interrupted_exit_status() : result.converged ? 0 : 3;
+  r.summary = fsi_summary(c, su, result, r.measures, deformed, options, fluid_only);
+  r.report = fsi_report(c, result, r.measures, *su.f.stokes, fluid_only);
+  r.exit_status = exit_status_of(result);
   if (!result.failure.empty()) r.failure = result.failure + " (the last good state is written in " + c.output.dir + "/)";
-
-  // Outputs: the fields where they exist everywhere (a solution exact near the
-  // structure only, whose expansion failed, draws nothing).
-  const FluidSolution* fluid = nullptr;
-  if (f.stokes->has_solution() && (c.output.png || c.output.vtu)) try {
-      fluid = &f.stokes->solution();
-    } catch (const SolverFailure&) {  // said in result.failure by couple()
-    }
-  const bool has_fluid = fluid != nullptr;
-  const std::vector<int> contact_vertices = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
-    if (c.output.vtu && has_fluid) {
-      const bool fluid_vtu =
-          out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
-      if (!fluid_only) {
-        const bool structure_vtu =
-            out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
-        if (fluid_vtu && structure_vtu)  // never a .pvd that names a missing file
-          out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
-      }
-    }
-    if (c.output.png && has_fluid) {
-      char note[256];
-      std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s", c.coupling.eps,
-                    c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h, c.structure.h,
-                    fluid_only ? "structure at rest"
-                               : (std::to_string(result.iterations) + " iterations" +
-                                  (result.converged ? "" : " (not converged)")).c_str());
-      out.write(fluid_only ? "fluid.png" : "fsi.png", [&](const std::string& p) {
-        write_fluid_png(p, c, *f.mesh, *fluid, deformed, contact_vertices, c.name + ": fluid velocity magnitude", note);
-      });
-      if (!fluid_only)
-        out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
-    }
-    if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history, false); });
-    out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
+    write_fsi_files(out, c, su, result, deformed, fluid_only);
   };
-  write_outputs(c, r, files, [&](Json& summary) { summary["timing_s"] = timing_json(times, total.elapsed()); });
+  write_outputs(c, r, files, [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;
 }
 

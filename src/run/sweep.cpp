@@ -124,7 +124,7 @@ std::string status_of(const RunResult& r, SweepResult& result) {
   else if (r.exit_status > 128) status = "interrupted", result.interrupted_by = r.exit_status - 128;
   else if (r.exit_status == 3) status = "not converged", ++result.not_converged;
   else status = "converged", ++result.converged;
-  if (r.summary.contains("convergence_warning")) status += ", unsettled (see its history.csv)";
+  if (!r.measures.convergence_warning.empty()) status += ", unsettled (see its history.csv)";
   return status;
 }
 
@@ -168,7 +168,7 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
     const std::string prefix = "[row " + std::to_string(i + 1) + "] ";
     if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
     const RunResult r = run_case(rows[i].c, run_options);
-    rows[i].summary = r.summary;
+    rows[i].measures = r.measures;
     rows[i].status = status_of(r, result);
     rows[i].wall_s = clock.elapsed();
     ++result.rows;

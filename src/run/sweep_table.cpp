@@ -13,16 +13,9 @@ std::string fmt(double v, int digits = 6) {
   return s.str();
 }
 
-// A number of a summary by its path of keys; NaN if any key is missing or the value
-// is not a number (a failed row's summary has few keys; NaN is written as null).
-double number_at(const Json& s, std::initializer_list<const char*> path) {
-  const Json* node = &s;
-  for (const char* key : path) {
-    if (!node->is_object() || !node->contains(key)) return NAN;
-    node = &(*node)[key];
-  }
-  return node->is_number() ? node->get<double>() : NAN;
-}
+// A measured value as summary.json states it: a non-finite one is null there, and
+// a blank (NaN) here.
+double stated(double v) { return std::isfinite(v) ? v : NAN; }
 
 // A CSV cell in quotes, its quotes doubled (RFC 4180).
 std::string quoted(const std::string& text) {
@@ -50,36 +43,34 @@ std::pair<std::string, std::string> sweep_tables(const std::vector<SweepRow>& ro
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const SweepRow& row = rows[i];
     const Case& c = row.c;
-    const Json& s = row.summary;
+    const RunMeasures& m = row.measures;
     const std::string& status = row.status;
     const double wall = row.wall_s;
-    auto num = [&](const char* key) { return number_at(s, {key}); };
     auto paper = [&](const char* key) {
       auto it = row.paper.find(key);
       return it == row.paper.end() ? std::string("") : it->second;
     };
-    const double k = c.fluid ? num("paper_k") : NAN;
-    const double x_min = number_at(s, {"contact", "x_min"}), x_max = number_at(s, {"contact", "x_max"});
-    const double ft_n = number_at(s, {"mesh", "fluid", "triangles"}), st_n = number_at(s, {"mesh", "structure", "triangles"});
-    const int ft = std::isfinite(ft_n) ? static_cast<int>(ft_n) : 0, st = std::isfinite(st_n) ? static_cast<int>(st_n) : 0;
-    const double iterations_n = num("iterations");
-    const int iterations = std::isfinite(iterations_n) ? static_cast<int>(iterations_n) : 0;
-    const double fluid_s = number_at(s, {"timing_s", "fluid"});
+    const double k = c.fluid && m.stop ? static_cast<double>(m.stop->paper_k) : NAN;
+    const double increment = m.stop ? stated(m.stop->final_increment) : NAN;
+    const double v = m.fluid_in_structure ? stated(m.fluid_in_structure->v) : NAN;
+    const double v_over_eps = m.fluid_in_structure ? stated(m.fluid_in_structure->v_over_eps) : NAN;
+    const double max_u = m.displacement ? stated(m.displacement->max) : NAN;
+    const bool touching = m.contact && m.contact->active_nodes > 0;  // x_min, x_max: null without contact
+    const double x_min = touching ? m.contact->x_min : NAN, x_max = touching ? m.contact->x_max : NAN;
+    const int ft = m.fluid_mesh.triangles, st = m.structure_mesh.triangles;
     const double hF = c.fluid ? c.fluid->h : NAN;
     md << "| " << i + 1 << " | " << fmt(c.coupling.eps) << " | " << fmt(c.coupling.omega) << " | " << fmt(hF)
        << " | " << fmt(c.structure.h) << " | " << fmt(k) << " | " << paper("k") << " | "
-       << fmt(num("final_increment_l2")) << " | " << paper("increment") << " | "
-       << fmt(num("fluid_velocity_l2_in_structure")) << " | " << paper("v_norm") << " | "
-       << fmt(num("fluid_velocity_l2_in_structure_over_eps")) << " | " << paper("v_over_eps") << " | "
-       << fmt(num("max_displacement"), 4) << " | " << fmt(x_min, 4) << "–" << fmt(x_max, 4) << " | " << ft
-       << " / " << st << " | " << fmt(wall, 3) << " | " << md_cell(status) << " |\n";
+       << fmt(increment) << " | " << paper("increment") << " | " << fmt(v) << " | " << paper("v_norm") << " | "
+       << fmt(v_over_eps) << " | " << paper("v_over_eps") << " | " << fmt(max_u, 4) << " | " << fmt(x_min, 4)
+       << "–" << fmt(x_max, 4) << " | " << ft << " / " << st << " | " << fmt(wall, 3) << " | " << md_cell(status)
+       << " |\n";
     csv_out << std::setprecision(10) << i + 1 << ',' << c.coupling.eps << ',' << c.coupling.omega << ',' << hF
-            << ',' << c.structure.h << ',' << c.coupling.scheme << ',' << (c.fluid ? c.fluid->chi : std::string()) << ',' << k << ',' << paper("k") << ','
-            << iterations << ',' << num("final_increment_l2") << ','
-            << paper("increment") << ',' << num("fluid_velocity_l2_in_structure") << ',' << paper("v_norm")
-            << ',' << num("fluid_velocity_l2_in_structure_over_eps") << ',' << paper("v_over_eps") << ','
-            << num("max_displacement") << ',' << x_min << ',' << x_max << ',' << ft << ',' << st << ','
-            << wall << ',' << fluid_s << ',' << quoted(status) << '\n';
+            << ',' << c.structure.h << ',' << c.coupling.scheme << ',' << (c.fluid ? c.fluid->chi : std::string())
+            << ',' << k << ',' << paper("k") << ',' << m.iterations << ',' << increment << ',' << paper("increment")
+            << ',' << v << ',' << paper("v_norm") << ',' << v_over_eps << ',' << paper("v_over_eps") << ',' << max_u
+            << ',' << x_min << ',' << x_max << ',' << ft << ',' << st << ',' << wall << ',' << m.fluid_s << ','
+            << quoted(status) << '\n';
   }
   return {md.str(), csv_out.str()};
 }

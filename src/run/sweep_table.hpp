@@ -7,15 +7,15 @@
 #include <vector>
 
 #include "io/case.hpp"
-#include "run/summary.hpp"
+#include "run/run_measures.hpp"
 
 namespace fsi {
 
 struct SweepRow {
   Case c;
   std::map<std::string, std::string> paper;  // paper.* reference values (and "label")
-  // After the run: its summary (null if not run), status and wall time.
-  Json summary;
+  // After the run: what it measured (nothing if not run or failed), status and wall time.
+  RunMeasures measures;
   std::string status = "not run (interrupted)";
   double wall_s = NAN;
 };

@@ -179,6 +179,46 @@ TEST(FsiRun, SweepMarksRowsAndWritesTables) {
   fs::remove_all(dir);
 }
 
+// The sweep's table is written from the rows' typed measures (RunMeasures), the
+// summaries from the same: row `i` of table.csv states what its summary.json does
+// (to the table's 10 digits).
+void expect_table_states_summary(const fs::path& csv, std::size_t i, const nlohmann::json& summary) {
+  std::istringstream lines(testing::slurp(csv));
+  std::string header, line;
+  std::getline(lines, header);
+  for (std::size_t k = 0; k <= i; ++k) std::getline(lines, line);
+  auto cells = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  const std::vector<std::string> names = cells(header), values = cells(line);
+  ASSERT_GE(values.size(), names.size() - 1) << line;
+  auto column = [&](const std::string& name) {
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (names[k] == name) return std::stod(values[k]);
+    ADD_FAILURE() << "no column " << name;
+    return 0.0;
+  };
+  const struct {
+    const char* column;
+    double stated;
+  } pairs[] = {{"k", summary["paper_k"].get<double>()},
+               {"iterations", summary["iterations"].get<double>()},
+               {"final_increment_l2", summary["final_increment_l2"].get<double>()},
+               {"v_l2_in_structure", summary["fluid_velocity_l2_in_structure"].get<double>()},
+               {"v_over_eps", summary["fluid_velocity_l2_in_structure_over_eps"].get<double>()},
+               {"max_displacement", summary["max_displacement"].get<double>()},
+               {"contact_x_min", summary["contact"]["x_min"].get<double>()},
+               {"contact_x_max", summary["contact"]["x_max"].get<double>()},
+               {"fluid_triangles", summary["mesh"]["fluid"]["triangles"].get<double>()},
+               {"structure_triangles", summary["mesh"]["structure"]["triangles"].get<double>()},
+               {"fluid_s", summary["timing_s"]["fluid"].get<double>()}};
+  for (const auto& p : pairs)
+    EXPECT_NEAR(column(p.column), p.stated, 1e-9 * std::abs(p.stated)) << "row " << i + 1 << ": " << p.column;
+}
+
 // Rows of a sweep share meshes and setups (SetupCache); each row's numbers must be
 // those of a run of its own, bit for bit.
 TEST(FsiRun, SweepRowsEqualSeparateRuns) {
@@ -197,6 +237,7 @@ TEST(FsiRun, SweepRowsEqualSeparateRuns) {
     const auto b = nlohmann::json::parse(testing::slurp(row_dir / "summary.json"));
     for (const char* key : {"iterations", "final_increment_l2", "fluid_velocity_l2_in_structure", "max_displacement"})
       EXPECT_EQ(a[key], b[key]) << "row " << i + 1 << ": " << key;
+    expect_table_states_summary(dir / "tab" / "table.csv", i, b);
   }
   fs::remove_all(dir);
 }
