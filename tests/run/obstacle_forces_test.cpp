@@ -16,6 +16,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/obstacle_forces.hpp"
+#include "support/channel.hpp"
 #include "support/traction.hpp"
 
 namespace fsi {
@@ -23,13 +24,7 @@ namespace {
 
 constexpr double kMu = 0.0035, kR = 0.1, kYc = 0.2;
 
-FluidParams channel() {
-  FluidParams f;
-  f.L1 = 2.0, f.H1 = 0.5, f.H2 = 0.5;
-  f.mu = kMu, f.Vmax = 1.0, f.f = Point::Zero();
-  f.sides = {"inflow", "wall", "outflow", "wall"};
-  return f;
-}
+FluidParams channel() { return testing::channel(kMu); }
 
 struct Forces {
   Point residual[2], traction[2];

@@ -17,6 +17,7 @@
 #include "mesh/polygon.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/obstacle_forces.hpp"
+#include "support/channel.hpp"
 #include "support/traction.hpp"
 
 namespace fsi {
@@ -24,13 +25,7 @@ namespace {
 
 constexpr double kMu = 0.0035;
 
-FluidParams channel() {
-  FluidParams f;
-  f.L1 = 2.0, f.H1 = 0.5, f.H2 = 0.5;
-  f.mu = kMu, f.Vmax = 1.0, f.f = Point::Zero();
-  f.sides = {"inflow", "wall", "outflow", "wall"};
-  return f;
-}
+FluidParams channel() { return testing::channel(kMu); }
 
 std::vector<Point> square() {
   std::vector<Point> p;
