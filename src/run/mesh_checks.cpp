@@ -36,6 +36,14 @@ bool strictly_inside(const Point& a, const Point& b, const Point& c, const Point
   return left(a, b) && left(b, c) && left(c, a);
 }
 
+// The open segments ab and cd cross at one point inside both (touching is not crossing).
+bool strictly_crossing(const Point& a, const Point& b, const Point& c, const Point& d) {
+  auto side = [](const Point& p, const Point& q, const Point& r) {
+    return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
+  };
+  return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
+}
+
 // "<case>: <key> = <value> contradicts <what> <file>: <detail>; allowed: <allowed>"
 [[noreturn]] void contradiction(const Case& c, const std::string& key, double value, const std::string& what,
                                 const std::string& file, const std::string& detail, const std::string& allowed) {
@@ -106,16 +114,25 @@ void check_clamped(const Case& c, const Mesh& mesh, const std::string& what) {
                        " is not connected to Gamma_D; allowed: every part of the mesh joined to the clamped side");
 }
 
-// A polygon's corner can reach into the structure between its vertices (a wedge's tip
-// into a beam's side): the vertices' gaps do not see it.
+// A polygon can reach into the structure between its vertices (a wedge's tip into a
+// beam's side, a thin bar across it): the vertices' gaps do not see it. Touching (a
+// side along the structure's boundary) is allowed, as the gap's margin allows it.
 void check_corners_outside(const Case& c, const Mesh& mesh, const std::string& what) {
-  for (std::size_t i = 0; i < c.obstacles.size(); ++i)
-    for (const Point& corner : c.obstacles[i].points)
+  const std::string allowed = "; allowed: every obstacle outside the structure's initial configuration";
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i) {
+    const std::vector<Point>& p = c.obstacles[i].points;
+    const std::string whose = " of obstacles[" + std::to_string(i + 1) + "]";
+    for (const Point& corner : p)
       for (const auto& t : mesh.triangles)
         if (strictly_inside(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], corner))
-          throw InputError(c.source + ": " + what + ": the corner " + at(corner) + " of obstacles[" +
-                           std::to_string(i + 1) + "] lies inside the structure at rest; allowed: every "
-                           "obstacle outside the structure's initial configuration");
+          throw InputError(c.source + ": " + what + ": the corner " + at(corner) + whose +
+                           " lies inside the structure at rest" + allowed);
+    for (std::size_t k = 0; k < p.size(); ++k)
+      for (const BoundaryEdge& e : mesh.boundary_edges)
+        if (strictly_crossing(p[k], p[(k + 1) % p.size()], mesh.vertices[e.v[0]], mesh.vertices[e.v[1]]))
+          throw InputError(c.source + ": " + what + ": the side " + at(p[k]) + " - " + at(p[(k + 1) % p.size()]) +
+                           whose + " crosses the structure's boundary at rest" + allowed);
+  }
 }
 
 void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {

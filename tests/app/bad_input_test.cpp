@@ -206,6 +206,7 @@ std::vector<BadInput> bad_inputs() {
       {"fsi_polygon_overlaps_a_disk", kFsiObstacles + kDisk + polygon_obstacle("[0.033, -0.012], [0.045, -0.012], [0.045, -0.004], [0.033, -0.004]"), "", {"case.toml: obstacles[2] overlaps obstacles[1]", "obstacles at least fluid.h/2 = 0.002 apart"}},
       {"fsi_polygon_around_a_disk", kFsiObstacles + kDisk + polygon_obstacle("[0.02, -0.03], [0.05, -0.03], [0.05, -0.006], [0.02, -0.006]"), "", {"obstacles[2] overlaps obstacles[1]"}},
       {"fsi_polygons_too_close", kFsiObstacles + polygon_obstacle("[0.02, -0.03], [0.04, -0.03], [0.03, -0.01]") + polygon_obstacle("[0.0405, -0.03], [0.06, -0.03], [0.05, -0.01]"), "", {"obstacles[2] comes within 0.0005 of obstacles[1]"}},
+      {"fsi_polygon_bar_across_the_structure", kFsiObstacles + polygon_obstacle("[0.0301, -0.01], [0.0303, -0.01], [0.0303, 0.01], [0.0301, 0.01]"), "", {"the side (0.0303, -0.01) - (0.0303, 0.01) of obstacles[1] crosses the structure's boundary at rest"}},
       {"fsi_polygon_tip_into_the_structure", kFsiObstacles + polygon_obstacle("[0.0295, -0.01], [0.0305, -0.01], [0.03, 0.001]"), "", {"the corner (0.03, 0.001) of obstacles[1] lies inside the structure at rest"}},
       {"fsi_obstacles_body_fitted", kFsiObstacles + kDisk, "--set fluid.method=body-fitted", {"fluid.method = \"body-fitted\"", "[[obstacles]]", "\"penalised\""}},
       {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
