@@ -2,6 +2,7 @@
 // asked for, the problem must fit the stated limits, and the loads must give
 // numbers a double can hold. Each names the key to change and the allowed range.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "io/case.hpp"
 #include "io/case_reader.hpp"
+#include "mesh/polygon.hpp"
 
 namespace fsi::case_detail {
 namespace {
@@ -75,57 +77,90 @@ void check_strain(const Case& c, const Origin& o) {
   if (!problem.empty()) throw InputError(o.of("structure.E") + ": " + problem);
 }
 
-// A hole of the generated box: [obstacle]'s disk, or a disk of [[obstacles]]; `key`
-// names it in messages ("obstacle", "obstacles[2]").
+// A hole of the generated box: [obstacle]'s disk, or a disk or polygon (`corners`) of
+// [[obstacles]]; `key` names it in messages ("obstacle", "obstacles[2]").
 struct Hole {
   double x0, y0, r;
+  std::vector<Point> corners;
   std::string key;
+  bool polygon() const { return !corners.empty(); }
+  double area() const { return polygon() ? std::abs(signed_area(corners)) : std::numbers::pi * r * r; }
+  // The key whose value places it, and where it is, for messages.
+  std::string place_key() const { return key + (polygon() ? ".points" : ".r"); }
+  std::string where() const {
+    return polygon() ? "" : "= " + shortest(r) + " at (" + shortest(x0) + ", " + shortest(y0) + ") ";
+  }
 };
 
 std::vector<Hole> fluid_holes(const Case& c) {
-  if (!c.obstacles_given) return {{c.obstacle.x0, c.obstacle.y0, c.obstacle.r, "obstacle"}};
+  if (!c.obstacles_given) return {{c.obstacle.x0, c.obstacle.y0, c.obstacle.r, {}, "obstacle"}};
   std::vector<Hole> holes;
-  for (std::size_t i = 0; i < c.obstacles.size(); ++i)
-    holes.push_back({c.obstacles[i].x0, c.obstacles[i].y0, c.obstacles[i].r, "obstacles[" + std::to_string(i + 1) + "]"});
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i) {
+    const ObstacleSpec& o = c.obstacles[i];
+    holes.push_back({o.x0, o.y0, o.r, o.points, "obstacles[" + std::to_string(i + 1) + "]"});
+  }
   return holes;
 }
 
-// The disk inside the box with room for a triangle between it and every side (a gap
-// below half of hF leaves slivers), its circle at least six segments.
+// The hole's extent [x_min, x_max] × [y_min, y_max] (a polygon's lies at its corners).
+std::array<double, 4> extent(const Hole& h) {
+  if (!h.polygon()) return {h.x0 - h.r, h.x0 + h.r, h.y0 - h.r, h.y0 + h.r};
+  std::array<double, 4> e = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const Point& p : h.corners)
+    e = {std::min(e[0], p.x()), std::max(e[1], p.x()), std::min(e[2], p.y()), std::max(e[3], p.y())};
+  return e;
+}
+
+// The hole inside the box with room for a triangle between it and every side (a gap
+// below half of hF leaves slivers); a circle at least six segments (a polygon's sides
+// are cut as finely as they need, mesh_fluid_in_gmsh).
 void check_hole_in_box(const Case& c, const Origin& o, const Hole& ob) {
   const auto& f = *c.fluid;
   const std::string whose = ob.key == "obstacle" ? "the obstacle's" : ob.key + "'s";
-  if (!(f.h <= ob.r))
+  if (!ob.polygon() && !(f.h <= ob.r))
     fail(o, "fluid.h", "= " + shortest(f.h) + " is larger than " + whose + " radius (the circle needs six segments)",
          "(0, " + ob.key + ".r = " + shortest(ob.r) + "] (" + o.value(ob.key + ".r", ob.r, "fluid.h") + ")");
   const double gap = f.h / 2;
+  const auto [x_min, x_max, y_min, y_max] = extent(ob);
   const struct {
     const char* side;
     double distance;
-  } sides[] = {{"left side x = 0", ob.x0 - ob.r},
-               {"right side x = fluid.L1", f.L1 - (ob.x0 + ob.r)},
-               {"bottom y = -fluid.H2", (ob.y0 - ob.r) + f.H2},
-               {"top y = fluid.H1", f.H1 - (ob.y0 + ob.r)}};
+  } sides[] = {{"left side x = 0", x_min},
+               {"right side x = fluid.L1", f.L1 - x_max},
+               {"bottom y = -fluid.H2", y_min + f.H2},
+               {"top y = fluid.H1", f.H1 - y_max}};
   for (const auto& side : sides)
     if (!(side.distance >= gap))
-      fail(o, ob.key + ".r", "= " + shortest(ob.r) + " at (" + shortest(ob.x0) + ", " + shortest(ob.y0) +
-                                ") leaves " + approx(side.distance) + " to the fluid box's " + side.side,
-           "the disk inside (0, L1) x (-H2, H1) = (0, " + shortest(f.L1) + ") x (" + shortest(-f.H2) + ", " +
-               shortest(f.H1) + ") at least fluid.h/2 = " + approx(gap) + " from every side");
+      fail(o, ob.place_key(), ob.where() + "leaves " + approx(side.distance) + " to the fluid box's " + side.side,
+           std::string(ob.polygon() ? "the polygon" : "the disk") + " inside (0, L1) x (-H2, H1) = (0, " +
+               shortest(f.L1) + ") x (" + shortest(-f.H2) + ", " + shortest(f.H1) + ") at least fluid.h/2 = " +
+               approx(gap) + " from every side");
 }
 
-// Two holes of D must not meet: at least a triangle (fluid.h/2) between their circles.
+// The distance between two holes' regions: 0 or less if they meet.
+double distance_between(const Hole& a, const Hole& b) {
+  if (a.polygon() && b.polygon()) return polygon_distance(a.corners, b.corners);
+  if (!a.polygon() && !b.polygon()) return std::hypot(b.x0 - a.x0, b.y0 - a.y0) - a.r - b.r;
+  const Hole &disk = a.polygon() ? b : a, &polygon = a.polygon() ? a : b;
+  const Point centre(disk.x0, disk.y0);
+  if (inside_polygon(polygon.corners, centre)) return -disk.r;
+  return distance_to_boundary(polygon.corners, centre) - disk.r;
+}
+
+// Two holes of D must not meet: at least a triangle (fluid.h/2) between them.
 void check_holes_apart(const Case& c, const Origin& o, const std::vector<Hole>& holes) {
   const double gap = c.fluid->h / 2;
   for (std::size_t j = 1; j < holes.size(); ++j)
     for (std::size_t i = 0; i < j; ++i) {
       const Hole &a = holes[i], &b = holes[j];
-      const double between = std::hypot(b.x0 - a.x0, b.y0 - a.y0) - a.r - b.r;
+      const double between = distance_between(a, b);
+      const bool disks = !a.polygon() && !b.polygon();
+      const std::string what = disks ? " (disks at (" + shortest(a.x0) + ", " + shortest(a.y0) + ") and (" +
+                                           shortest(b.x0) + ", " + shortest(b.y0) + "))"
+                                     : "";
       if (!(between >= gap))
-        fail(o, b.key, (between < 0 ? "overlaps " + a.key : "comes within " + approx(between) + " of " + a.key) +
-                           " (disks at (" + shortest(a.x0) + ", " + shortest(a.y0) + ") and (" + shortest(b.x0) +
-                           ", " + shortest(b.y0) + "))",
-             "in a fluid box, disks at least fluid.h/2 = " + approx(gap) + " apart (each is a hole of D)");
+        fail(o, b.key, (between <= 0 ? "overlaps " + a.key : "comes within " + approx(between) + " of " + a.key) + what,
+             "in a fluid box, obstacles at least fluid.h/2 = " + approx(gap) + " apart (each is a hole of D)");
     }
 }
 
@@ -136,7 +171,7 @@ void check_fluid_box(const Case& c, const Origin& o) {
   double area = f.L1 * (f.H1 + f.H2);
   for (const Hole& hole : holes) {
     check_hole_in_box(c, o, hole);
-    area -= std::numbers::pi * hole.r * hole.r;
+    area -= hole.area();
   }
   check_holes_apart(c, o, holes);
   double estimate = 2.4 * area / (f.h * f.h);
@@ -225,21 +260,16 @@ void check_contact_gap(const Case& c, const Origin& o) {
          "\"paper\" with fluid.method = \"body-fitted\"");
 }
 
-// [[obstacles]] in a coupled run (SPEC §9): every obstacle is a hole of the generated
-// box (checked with it, check_fluid_box), so disks only; a mesh file's Σ5 and the
-// body-fitted mesh know [obstacle]'s one disk only.
+// [[obstacles]] in a coupled run (SPEC §9): every obstacle is a hole of D: of the
+// generated box (checked with it, check_fluid_box) or of the mesh file (checked when it
+// is read, run/hole_checks.cpp), so disks and polygons; the body-fitted mesh knows
+// [obstacle]'s one disk only.
 void check_fluid_obstacles(const Case& c, const Origin& o) {
   for (std::size_t i = 0; i < c.obstacles.size(); ++i)
-    if (c.obstacles[i].shape != "disk")
+    if (c.obstacles[i].shape == "half-plane")
       fail(o, "obstacles[" + std::to_string(i + 1) + "].shape",
-           "= \"" + c.obstacles[i].shape + "\" " +
-               (c.obstacles[i].shape == "polygon" ? "is not meshed as a hole of the fluid box yet (contact problems only)"
-                                                  : "is for contact problems only (no [fluid]): a fluid box's obstacles are its holes"),
-           "\"disk\" with a [fluid] section");
-  if (!c.fluid->mesh.empty())
-    fail(o, "fluid.mesh", "= \"" + c.fluid->mesh + "\" cannot be used with [[obstacles]]: a mesh file's hole Sigma_5 is "
-                          "checked against [obstacle]'s one disk",
-         "no fluid.mesh with [[obstacles]] (the generated box has a hole per obstacle), or [obstacle]");
+           "= \"half-plane\" is for contact problems only (no [fluid]): a fluid box's obstacles are its holes",
+           "\"disk\" or \"polygon\" with a [fluid] section");
   if (c.fluid->method == "body-fitted")
     fail(o, "fluid.method", "= \"body-fitted\" meshes the box with [obstacle]'s one disk, not [[obstacles]]",
          "\"penalised\" with [[obstacles]]");

@@ -4,26 +4,12 @@
 #include <string>
 
 #include "io/case_section.hpp"
+#include "mesh/polygon.hpp"
 
 namespace fsi::case_detail {
 namespace {
 
 constexpr std::size_t kMaxPolygonPoints = 2000;  // the simplicity check is quadratic: 2e6 pairs
-
-bool segments_cross(const Point& a, const Point& b, const Point& c, const Point& d) {
-  auto side = [](const Point& p, const Point& q, const Point& r) {
-    const double s = (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
-    return (s > 0) - (s < 0);
-  };
-  const int s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
-  if (s1 != s2 && s3 != s4) return true;
-  auto within = [](const Point& p, const Point& q, const Point& r) {  // r on segment pq, given collinear
-    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
-           r.y() <= std::max(p.y(), q.y());
-  };
-  return (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) || (s3 == 0 && within(c, d, a)) ||
-         (s4 == 0 && within(c, d, b));
-}
 
 // points = [[x, y], ...]: at least three, finite, a simple polygon (no two edges meet
 // but neighbours at their shared corner) with an area.
@@ -43,9 +29,7 @@ std::vector<Point> read_polygon(Section& s, const std::string& name, const Origi
     p.push_back(q);
   }
   const std::size_t m = p.size();
-  double area = 0;
-  for (std::size_t i = 0; i < m; ++i) area += p[i].x() * p[(i + 1) % m].y() - p[i].y() * p[(i + 1) % m].x();
-  if (!(std::abs(area) > 0)) fail(origin, key, "encloses no area", allowed);
+  if (!(std::abs(signed_area(p)) > 0)) fail(origin, key, "encloses no area", allowed);
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t j = i + 1; j < m; ++j) {
       const bool neighbours = j == i + 1 || (i == 0 && j == m - 1);

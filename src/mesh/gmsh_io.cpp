@@ -103,8 +103,10 @@ Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
   std::vector<std::string> labels = {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"};
   if (g.holes) {
     scaled.holes.emplace();
-    for (const auto& d : *g.holes) {
-      scaled.holes->push_back({d[0] / u, d[1] / u, d[2] / u});
+    for (const FluidHole& d : *g.holes) {
+      FluidHole hole{d.x0 / u, d.y0 / u, d.r / u};
+      for (const Point& p : d.corners) hole.corners.push_back(p / u);
+      scaled.holes->push_back(std::move(hole));
       labels.push_back("Sigma_5_" + std::to_string(scaled.holes->size()));
     }
   } else {
@@ -115,9 +117,10 @@ Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
 }
 
 std::vector<int> hole_labels(const Mesh& mesh) {
-  if (mesh.has_label("Sigma_5")) return {mesh.label("Sigma_5")};
+  // Sigma_5_i first: a file read for [[obstacles]] may also hold Sigma_5, empty.
   std::vector<int> labels;
   for (int i = 1; mesh.has_label("Sigma_5_" + std::to_string(i)); ++i) labels.push_back(mesh.label("Sigma_5_" + std::to_string(i)));
+  if (labels.empty() && mesh.has_label("Sigma_5")) return {mesh.label("Sigma_5")};
   return labels;
 }
 

@@ -30,23 +30,32 @@ Mesh generate_structure_mesh(const StructureGeometry& g);
 Mesh generate_structure_mesh(const StructureGeometry& g, const GmshLimits& limits);
 
 // D = (0,L1)×(−H2,H1) minus the disk B((x0,y0),r) (or minus `holes`); labels Sigma_1
-// (left), Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle).
+// (left), Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle; or
+// Sigma_5_1, Sigma_5_2, ... the holes).
 //
 // With h_near > 0, triangles of size h_near inside the box `band` ([x_min, y_min,
 // x_max, y_max]), growing linearly by kBandGrowth per unit distance from it up to h
 // (a Gmsh Box field with a transition thickness): the band refinement of fluid.h_near.
+// A hole of D: the disk B((x0, y0), r), or the polygon `corners` (a simple one, either
+// orientation) if it has any. A polygon's boundary is a loop of mesh edges through its
+// corners, each side cut into at least two (mesh_fluid_in_gmsh).
+struct FluidHole {
+  double x0 = 0, y0 = 0, r = 0;
+  std::vector<Point> corners = {};
+};
+
 struct FluidGeometry {
   double L1, H1, H2, x0, y0, r;
   double h;
   double h_near = 0;
   std::array<double, 4> band{};
-  // [[obstacles]] (SPEC §9): these disks (x0, y0, r), any number, are D's holes
+  // [[obstacles]] (SPEC §9): these disks and polygons, any number, are D's holes
   // instead of the one above, labelled Sigma_5_1, Sigma_5_2, ... in this order (their
   // union is Σ5; Gmsh's model also has it as the group Sigma_5).
-  std::optional<std::vector<std::array<double, 3>>> holes = std::nullopt;
+  std::optional<std::vector<FluidHole>> holes = std::nullopt;
 };
-// The labels of D's holes in a mesh of generate_fluid_mesh or a file: Sigma_5, or
-// Sigma_5_1, Sigma_5_2, ... (none for a box without holes).
+// The labels of D's holes in a mesh of generate_fluid_mesh or a file: Sigma_5_1,
+// Sigma_5_2, ... if there are any, else Sigma_5 (none for a box without holes).
 std::vector<int> hole_labels(const Mesh& mesh);
 // The size's growth away from the band, per unit length. Measured on §7.2 (docs/
 // validation.md, "Band refinement"): halving it or the far size h moves max |u| by

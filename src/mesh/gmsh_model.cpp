@@ -4,6 +4,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -253,6 +254,27 @@ std::vector<int> add_circle(double x0, double y0, double r, double h) {
           geo::addCircleArc(s, centre, e)};
 }
 
+// A polygon as a loop of lines through its corners. Each corner's size is at most half
+// its shorter side, so that the mesh grades down to a short side; the sides shorter
+// than 2h get three nodes outright (the band's size field ignores the points' sizes):
+// every side is cut into at least two segments (SPEC §9: a hole of D).
+std::vector<int> add_polygon(const std::vector<Point>& corners, double h) {
+  namespace geo = gmsh::model::geo;
+  const std::size_t m = corners.size();
+  auto side = [&](std::size_t i) { return (corners[(i + 1) % m] - corners[i]).norm(); };
+  std::vector<int> points, lines;
+  for (std::size_t i = 0; i < m; ++i)
+    points.push_back(geo::addPoint(corners[i].x(), corners[i].y(), 0, std::min({h, side(i) / 2, side((i + m - 1) % m) / 2})));
+  for (std::size_t i = 0; i < m; ++i) lines.push_back(geo::addLine(points[i], points[(i + 1) % m]));
+  return lines;
+}
+
+void cut_short_sides(const std::vector<Point>& corners, const std::vector<int>& lines, double h) {
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    if ((corners[(i + 1) % corners.size()] - corners[i]).norm() < 2 * h)
+      gmsh::model::mesh::setTransfiniteCurve(lines[i], 3);
+}
+
 }  // namespace
 
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
@@ -264,13 +286,16 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
             c = geo::addPoint(g.L1, g.H1, 0, h), d = geo::addPoint(0, g.H1, 0, h);
   const int bottom = geo::addLine(a, b), right = geo::addLine(b, c), top = geo::addLine(c, d),
             left = geo::addLine(d, a);
-  const std::vector<std::array<double, 3>> disks = g.holes ? *g.holes : std::vector<std::array<double, 3>>{{g.x0, g.y0, g.r}};
-  std::vector<std::vector<int>> arcs;
-  for (const auto& disk : disks) arcs.push_back(add_circle(disk[0], disk[1], disk[2], h));
+  const std::vector<FluidHole> holes = g.holes ? *g.holes : std::vector<FluidHole>{{g.x0, g.y0, g.r}};
+  std::vector<std::vector<int>> arcs;  // each hole's curves: a circle's four arcs, a polygon's sides
+  for (const FluidHole& hole : holes)
+    arcs.push_back(hole.corners.empty() ? add_circle(hole.x0, hole.y0, hole.r, h) : add_polygon(hole.corners, h));
   std::vector<int> loops = {geo::addCurveLoop({bottom, right, top, left})};
   for (const auto& circle : arcs) loops.push_back(geo::addCurveLoop(circle));
   const int surface = geo::addPlaneSurface(loops);
   geo::synchronize();
+  for (std::size_t k = 0; k < holes.size(); ++k)
+    if (!holes[k].corners.empty()) cut_short_sides(holes[k].corners, arcs[k], h);
   if (g.h_near > 0) add_band_field(g);
   mesh_2d(h, g.h_near > 0 ? MeshOptions{5, 0} : MeshOptions{});
   std::vector<RawGroup> groups = {{2, "D", {surface}},

@@ -3,6 +3,7 @@
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/fluid_band.hpp"
+#include "run/hole_checks.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/structure_setup.hpp"
 
@@ -15,17 +16,23 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
     try {
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
-      if (c.obstacles_given) {  // every obstacle a hole of D (SPEC §9; disks: check_fluid_obstacles)
+      if (c.obstacles_given) {  // every obstacle a hole of D (SPEC §9; disks and polygons: check_fluid_obstacles)
         g.holes.emplace();
-        for (const ObstacleSpec& b : c.obstacles) g.holes->push_back({b.x0, b.y0, b.r});
+        for (const ObstacleSpec& b : c.obstacles) g.holes->push_back({b.x0, b.y0, b.r, b.points});
       }
       return generate_fluid_mesh(g);
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
     }
   }
-  return read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D",
-                        case_limits().fluid_triangles);
+  if (!c.obstacles_given)
+    return read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D",
+                          case_limits().fluid_triangles);
+  // [[obstacles]]: a hole per obstacle (SPEC §9), checked by check_fluid_mesh.
+  Mesh mesh = read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"}, "D",
+                             case_limits().fluid_triangles, mesh_hole_groups(c));
+  name_mesh_holes(c, mesh);
+  return mesh;
 }
 
 Mesh make_fluid_mesh(const Case& c) {

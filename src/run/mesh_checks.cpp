@@ -8,6 +8,7 @@
 #include "common/format.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/contact_gap.hpp"
+#include "run/hole_checks.hpp"
 #include "solid/obstacle.hpp"
 
 namespace fsi {
@@ -17,13 +18,7 @@ namespace {
 // domain's size: files written with 10 significant digits pass, a wrong key fails.
 constexpr double kRelativeTolerance = 1e-8;
 
-std::string at(const Point& p) {
-  std::string text = "(";  // built step by step: "(" + std::string trips GCC 12's -Wrestrict
-  text += shortest(p.x());
-  text += ", ";
-  text += shortest(p.y());
-  return text + ")";
-}
+std::string at(const Point& p) { return point_text(p); }
 
 struct Box {
   Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
@@ -33,6 +28,20 @@ Box bounding_box(const Mesh& mesh) {
   Box b;
   for (const Point& p : mesh.vertices) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
   return b;
+}
+
+// x strictly inside the counter-clockwise triangle abc.
+bool strictly_inside(const Point& a, const Point& b, const Point& c, const Point& x) {
+  auto left = [&x](const Point& p, const Point& q) { return (q - p).x() * (x - p).y() - (q - p).y() * (x - p).x() > 0; };
+  return left(a, b) && left(b, c) && left(c, a);
+}
+
+// The open segments ab and cd cross at one point inside both (touching is not crossing).
+bool strictly_crossing(const Point& a, const Point& b, const Point& c, const Point& d) {
+  auto side = [](const Point& p, const Point& q, const Point& r) {
+    return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
+  };
+  return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
 }
 
 // "<case>: <key> = <value> contradicts <what> <file>: <detail>; allowed: <allowed>"
@@ -105,6 +114,27 @@ void check_clamped(const Case& c, const Mesh& mesh, const std::string& what) {
                        " is not connected to Gamma_D; allowed: every part of the mesh joined to the clamped side");
 }
 
+// A polygon can reach into the structure between its vertices (a wedge's tip into a
+// beam's side, a thin bar across it): the vertices' gaps do not see it. Touching (a
+// side along the structure's boundary) is allowed, as the gap's margin allows it.
+void check_corners_outside(const Case& c, const Mesh& mesh, const std::string& what) {
+  const std::string allowed = "; allowed: every obstacle outside the structure's initial configuration";
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i) {
+    const std::vector<Point>& p = c.obstacles[i].points;
+    const std::string whose = " of obstacles[" + std::to_string(i + 1) + "]";
+    for (const Point& corner : p)
+      for (const auto& t : mesh.triangles)
+        if (strictly_inside(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], corner))
+          throw InputError(c.source + ": " + what + ": the corner " + at(corner) + whose +
+                           " lies inside the structure at rest" + allowed);
+    for (std::size_t k = 0; k < p.size(); ++k)
+      for (const BoundaryEdge& e : mesh.boundary_edges)
+        if (strictly_crossing(p[k], p[(k + 1) % p.size()], mesh.vertices[e.v[0]], mesh.vertices[e.v[1]]))
+          throw InputError(c.source + ": " + what + ": the side " + at(p[k]) + " - " + at(p[(k + 1) % p.size()]) +
+                           whose + " crosses the structure's boundary at rest" + allowed);
+  }
+}
+
 void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {
   if (c.obstacles_given) {  // [[obstacles]]: every vertex outside every obstacle
     const ContactGap gap(c, mesh);
@@ -113,6 +143,7 @@ void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what
     if (d < -kPolygonMargin * diameter(mesh) * (1 + 1e-9))
       throw InputError(c.source + ": " + what + ": the structure starts inside an obstacle of [[obstacles]] (by " +
                        shortest(-d) + " m); allowed: every vertex outside every obstacle");
+    check_corners_outside(c, mesh, what);
     return;
   }
   const auto& o = c.obstacle;
@@ -145,7 +176,37 @@ void check_clamp_off_inflow(const Case& c, const Mesh& mesh, const std::string& 
                        "\"wall\" or \"outflow\" while the structure is clamped on x = 0");
 }
 
+// [obstacle]'s disk is the file's hole Sigma_5: its vertices on the circle, no triangle inside.
+void check_disk_hole(const Case& c, const Mesh& mesh) {
+  const auto& o = c.obstacle;
+  const std::string file = c.fluid->mesh;
+  const Point centre(o.x0, o.y0);
+  for (int v : mesh.vertices_on(mesh.label("Sigma_5"))) {
+    const double d = (mesh.vertices[v] - centre).norm();
+    if (std::abs(d - o.r) > 1e-6 * o.r)
+      contradiction(c, "obstacle.r", o.r, "fluid.mesh", file,
+                    "its Sigma_5 vertex " + at(mesh.vertices[v]) + " lies " + shortest(d) + " from the centre (" +
+                        shortest(o.x0) + ", " + shortest(o.y0) + ")",
+                    "obstacle.x0, y0, r describing the hole Sigma_5 of the mesh");
+  }
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Point g = (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]]) / 3.0;
+    if ((g - centre).norm() < o.r * (1 - 1e-6))
+      throw InputError(c.source + ": fluid.mesh " + file + " covers the obstacle: its triangle at " + at(g) +
+                       " lies inside the disk; allowed: D = the box minus the disk (obstacle.x0, y0, r)");
+  }
+}
+
 }  // namespace
+
+std::string point_text(const Point& p) {
+  std::string text = "(";  // built step by step: "(" + std::string trips GCC 12's -Wrestrict
+  text += shortest(p.x());
+  text += ", ";
+  text += shortest(p.y());
+  return text + ")";
+}
 
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
                     const std::vector<std::string>& curves, const std::string& surface, double max_triangles,
@@ -200,7 +261,6 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
 
 void check_fluid_mesh(const Case& c, const Mesh& mesh) {
   const auto& f = *c.fluid;
-  const auto& o = c.obstacle;
   const std::string file = f.mesh;
   const double tol = kRelativeTolerance * std::hypot(f.L1, f.H1 + f.H2);
   const Box b = bounding_box(mesh);
@@ -234,22 +294,10 @@ void check_fluid_mesh(const Case& c, const Mesh& mesh) {
         throw InputError(c.source + ": fluid.mesh " + file + ": " + label + " has the vertex " +
                          at(mesh.vertices[v]) + ", not on " + where + "; allowed: " + label + " = " + where);
   }
-  const Point centre(o.x0, o.y0);
-  for (int v : mesh.vertices_on(mesh.label("Sigma_5"))) {
-    const double d = (mesh.vertices[v] - centre).norm();
-    if (std::abs(d - o.r) > 1e-6 * o.r)
-      contradiction(c, "obstacle.r", o.r, "fluid.mesh", file,
-                    "its Sigma_5 vertex " + at(mesh.vertices[v]) + " lies " + shortest(d) + " from the centre (" +
-                        shortest(o.x0) + ", " + shortest(o.y0) + ")",
-                    "obstacle.x0, y0, r describing the hole Sigma_5 of the mesh");
-  }
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Point g = (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]]) / 3.0;
-    if ((g - centre).norm() < o.r * (1 - 1e-6))
-      throw InputError(c.source + ": fluid.mesh " + file + " covers the obstacle: its triangle at " + at(g) +
-                       " lies inside the disk; allowed: D = the box minus the disk (obstacle.x0, y0, r)");
-  }
+  if (c.obstacles_given)
+    check_mesh_holes(c, mesh);  // a hole per obstacle (run/hole_checks.hpp)
+  else
+    check_disk_hole(c, mesh);
   check_labelled(c, mesh, "fluid.mesh " + file);
 }
 

@@ -30,9 +30,12 @@ void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,
 // bottom, right and top sides (fluid.left, ... are applied on the labels whatever
-// the coordinates), Σ5 is the obstacle's circle and D excludes the disk, every boundary
-// edge labelled.
+// the coordinates), Σ5 is the obstacle's circle and D excludes the disk (with
+// [[obstacles]]: a hole per obstacle, check_mesh_holes), every boundary edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
+
+// "(x, y)" in the shortest digits, for messages.
+std::string point_text(const Point& p);
 
 // The first boundary edge of the triangulation (used by one triangle) that carries
 // no label, as its two vertex indices; {-1, -1} if none.

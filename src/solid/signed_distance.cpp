@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/polygon.hpp"
+
 namespace fsi {
 
 SignedDistance DiskObstacle::at(const Point& x) const {
@@ -23,15 +25,7 @@ PolygonObstacle::PolygonObstacle(std::vector<Point> points, double margin) : p_(
   ccw_ = area > 0;
 }
 
-bool PolygonObstacle::inside(const Point& x) const {
-  bool in = false;
-  for (std::size_t i = 0, j = p_.size() - 1; i < p_.size(); j = i++) {
-    const Point &a = p_[i], &b = p_[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) && x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
-}
+bool PolygonObstacle::inside(const Point& x) const { return inside_polygon(p_, x); }
 
 Point PolygonObstacle::outward(std::size_t i) const {  // edge i → i+1: right of it if counter-clockwise
   const Point e = p_[(i + 1) % p_.size()] - p_[i];

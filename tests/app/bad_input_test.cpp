@@ -95,6 +95,10 @@ const std::string kFsiObstacles =
     replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") +
     "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[fluid]\nh = 0.004\n";
 const std::string kDisk = "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\n";
+// One [[obstacles]] polygon with these corners ("[x, y], [x, y], ...").
+std::string polygon_obstacle(const std::string& corners) {
+  return "[[obstacles]]\nshape = \"polygon\"\npoints = [" + corners + "]\n";
+}
 
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
 
@@ -190,13 +194,20 @@ std::vector<BadInput> bad_inputs() {
       {"structure_starts_inside_an_obstacle", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\nboundary = \"all\"\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = 0.0\nr = 0.005\n", "", {"inside an obstacle", "[[obstacles]]"}},
       {"obstacles_gamma_c_on_a_rectangle", replace(kValid, "[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\ngamma = 0.8\n", "") + "[contact]\ngap = \"normal\"\n[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.005\n", "", {"contact.boundary = \"Gamma_C\"", "\"all\""}},
       // [[obstacles]] as holes of the fluid box (SPEC §9).
-      {"fsi_obstacle_half_plane", kFsiObstacles + "[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -0.01]\nnormal = [0, 1]\n", "", {"obstacles[1].shape = \"half-plane\"", "contact problems only", "\"disk\" with a [fluid] section"}},
+      {"fsi_obstacle_half_plane", kFsiObstacles + "[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -0.01]\nnormal = [0, 1]\n", "", {"obstacles[1].shape = \"half-plane\"", "contact problems only", "\"disk\" or \"polygon\" with a [fluid] section"}},
       {"fsi_obstacles_overlap", kFsiObstacles + kDisk + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.035\ny0 = -0.012\nr = 0.005\n", "", {"case.toml: obstacles[2] overlaps obstacles[1]", "fluid.h/2 = 0.002 apart"}},
       {"fsi_obstacles_too_close", kFsiObstacles + kDisk + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.0405\ny0 = -0.01\nr = 0.005\n", "", {"obstacles[2] comes within 0.0005 of obstacles[1]"}},
       {"fsi_obstacle_across_the_box_bottom", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.498\nr = 0.005\n", "", {"obstacles[1].r = 0.005", "to the fluid box's bottom", "at least fluid.h/2"}},
       {"fsi_obstacle_outside_the_box", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.6\ny0 = 0\nr = 0.005\n", "", {"obstacles[1].r", "right side x = fluid.L1"}},
       {"fsi_obstacle_smaller_than_hF", kFsiObstacles + "[[obstacles]]\nshape = \"disk\"\nx0 = 0.03\ny0 = -0.01\nr = 0.003\n", "", {"fluid.h = 0.004 is larger than obstacles[1]'s radius", "obstacles[1].r = 0.003"}},
-      {"fsi_obstacles_with_a_fluid_mesh", kFsiObstacles + kDisk, "--set fluid.mesh=box.msh", {"fluid.mesh", "cannot be used with [[obstacles]]"}},
+      {"fsi_obstacles_not_the_fluid_meshs_hole", kFsiObstacles + kDisk, "--set fluid.mesh=box.msh", {"case.toml: fluid.mesh box.msh: its hole Sigma_5_1 has the edge", "off the boundary of obstacles[1] (a disk)"}, {{"box.msh", shipped("paper-7.2-box-h0.02.msh")}}},
+      // Polygons as holes of the fluid box (SPEC §9).
+      {"fsi_polygon_across_the_box_bottom", kFsiObstacles + polygon_obstacle("[0.02, -0.499], [0.04, -0.499], [0.03, -0.4]"), "", {"obstacles[1].points leaves 0.001 to the fluid box's bottom", "at least fluid.h/2 = 0.002"}},
+      {"fsi_polygon_overlaps_a_disk", kFsiObstacles + kDisk + polygon_obstacle("[0.033, -0.012], [0.045, -0.012], [0.045, -0.004], [0.033, -0.004]"), "", {"case.toml: obstacles[2] overlaps obstacles[1]", "obstacles at least fluid.h/2 = 0.002 apart"}},
+      {"fsi_polygon_around_a_disk", kFsiObstacles + kDisk + polygon_obstacle("[0.02, -0.03], [0.05, -0.03], [0.05, -0.006], [0.02, -0.006]"), "", {"obstacles[2] overlaps obstacles[1]"}},
+      {"fsi_polygons_too_close", kFsiObstacles + polygon_obstacle("[0.02, -0.03], [0.04, -0.03], [0.03, -0.01]") + polygon_obstacle("[0.0405, -0.03], [0.06, -0.03], [0.05, -0.01]"), "", {"obstacles[2] comes within 0.0005 of obstacles[1]"}},
+      {"fsi_polygon_bar_across_the_structure", kFsiObstacles + polygon_obstacle("[0.0301, -0.01], [0.0303, -0.01], [0.0303, 0.01], [0.0301, 0.01]"), "", {"the side (0.0303, -0.01) - (0.0303, 0.01) of obstacles[1] crosses the structure's boundary at rest"}},
+      {"fsi_polygon_tip_into_the_structure", kFsiObstacles + polygon_obstacle("[0.0295, -0.01], [0.0305, -0.01], [0.03, 0.001]"), "", {"the corner (0.03, 0.001) of obstacles[1] lies inside the structure at rest"}},
       {"fsi_obstacles_body_fitted", kFsiObstacles + kDisk, "--set fluid.method=body-fitted", {"fluid.method = \"body-fitted\"", "[[obstacles]]", "\"penalised\""}},
       {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
       {"method_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=immersed", {"fluid.method", "body-fitted"}},

@@ -123,7 +123,7 @@ TEST(Case, IntegersAreAcceptedForRealKeys) {
 }
 
 TEST(Case, ResolvedTomlReloadsToTheSameCase) {
-  for (const char* name : {"paper-7.2", "paper-7.1-fig7-fine", "paper-7.1-fig5-msh"}) {
+  for (const char* name : {"paper-7.2", "paper-7.1-fig7-fine", "paper-7.1-fig5-msh", "flap-against-a-wedge"}) {
     const Case c = load_case(std::string(FSICONTACT_SOURCE_DIR) + "/cases/" + name + ".toml");
     const std::string text = to_toml(c);
     EXPECT_EQ(to_toml(load_case_text(text, "resolved.toml")), text) << name;

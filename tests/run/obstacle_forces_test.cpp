@@ -12,63 +12,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 
-#include "fem/quadrature.hpp"
-#include "fluid/mini_element.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/obstacle_forces.hpp"
+#include "support/channel.hpp"
+#include "support/traction.hpp"
 
 namespace fsi {
 namespace {
 
 constexpr double kMu = 0.0035, kR = 0.1, kYc = 0.2;
 
-FluidParams channel() {
-  FluidParams f;
-  f.L1 = 2.0, f.H1 = 0.5, f.H2 = 0.5;
-  f.mu = kMu, f.Vmax = 1.0, f.f = Point::Zero();
-  f.sides = {"inflow", "wall", "outflow", "wall"};
-  return f;
-}
-
-// ∫ σ(v_h, p_h) n_B ds over the edges labelled `label`, n_B out of the disk centred at
-// `centre` (into the fluid): the fluid's force on the disk, from the triangle on each
-// edge (P1 + bubble velocity, P1 pressure), 3 Gauss points per edge.
-Point traction_force(const Mesh& mesh, const FluidSolution& s, int label, const Point& centre) {
-  std::map<std::pair<int, int>, int> triangle_of;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) triangle_of[std::minmax(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])] = t;
-  const LineRule line = gauss_legendre(3);
-  Point F = Point::Zero();
-  for (const BoundaryEdge& e : mesh.edges_on(label)) {
-    const int t = triangle_of.at(std::minmax(e.v[0], e.v[1]));
-    const auto& tri = mesh.triangles[t];
-    const P1Triangle T(mesh, t);
-    const Point a = mesh.vertices[e.v[0]], b = mesh.vertices[e.v[1]];
-    Point n(b.y() - a.y(), a.x() - b.x());
-    n.normalize();
-    if (n.dot((a + b) / 2 - centre) < 0) n = -n;
-    for (std::size_t q = 0; q < line.x.size(); ++q) {
-      Eigen::Vector3d l = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) {
-        if (tri[k] == e.v[0]) l[k] = 1 - line.x[q];
-        if (tri[k] == e.v[1]) l[k] = line.x[q];
-      }
-      Eigen::Matrix2d grad = s.bubble.col(t) * bubble_gradient(T, l).transpose();
-      double p = 0;
-      for (int k = 0; k < 3; ++k) {
-        grad.row(0) += s.v1[tri[k]] * T.grad.row(k);
-        grad.row(1) += s.v2[tri[k]] * T.grad.row(k);
-        p += l[k] * s.p[tri[k]];
-      }
-      const Eigen::Matrix2d sigma = -p * Eigen::Matrix2d::Identity() + kMu * (grad + grad.transpose());
-      F += line.w[q] * (b - a).norm() * sigma * n;
-    }
-  }
-  return F;
-}
+FluidParams channel() { return testing::channel(kMu); }
 
 struct Forces {
   Point residual[2], traction[2];
@@ -77,7 +33,7 @@ struct Forces {
 Forces solve(double h) {
   const FluidParams f = channel();
   FluidGeometry g{f.L1, f.H1, f.H2, 0, 0, 0, h};
-  g.holes = std::vector<std::array<double, 3>>{{0.6, kYc, kR}, {0.6, -kYc, kR}};
+  g.holes = std::vector<FluidHole>{{0.6, kYc, kR}, {0.6, -kYc, kR}};
   const Mesh mesh = generate_fluid_mesh(g);
   PenalisedStokes stokes(mesh, kMu, 1.0, [](const Point&) { return Point(0, 0); }, box_boundary_conditions(mesh, f));
   const FluidSolution& s = stokes.solve();
@@ -86,7 +42,7 @@ Forces solve(double h) {
   for (int i = 0; i < 2; ++i) {
     const int label = mesh.label("Sigma_5_" + std::to_string(i + 1));
     out.residual[i] = hole_force(mesh, kMu, Point::Zero(), s, label, no_penalty);
-    out.traction[i] = traction_force(mesh, s, label, Point(0.6, i == 0 ? kYc : -kYc));
+    out.traction[i] = testing::traction_force(mesh, s, label, kMu);
   }
   return out;
 }
@@ -126,14 +82,14 @@ TEST(ObstacleForces, AtRestEachHoleFeelsItsBuoyancyExactly) {
   FluidParams f = channel();
   f.sides = {"wall", "outflow", "wall", "inflow"}, f.Vmax = 0, f.f = Point(0, -981);
   FluidGeometry g{f.L1, f.H1, f.H2, 0, 0, 0, 0.04};
-  g.holes = std::vector<std::array<double, 3>>{{0.6, kYc, kR}, {1.3, -kYc, 1.5 * kR}};
+  g.holes = std::vector<FluidHole>{{0.6, kYc, kR}, {1.3, -kYc, 1.5 * kR}};
   const Mesh mesh = generate_fluid_mesh(g);
   PenalisedStokes stokes(mesh, kMu, 1.0, [&](const Point&) { return f.f; }, box_boundary_conditions(mesh, f));
   const FluidSolution& s = stokes.solve();
   for (int i = 0; i < 2; ++i) {
     const int label = mesh.label("Sigma_5_" + std::to_string(i + 1));
     double area = 0;
-    const Point centre((*g.holes)[i][0], (*g.holes)[i][1]);
+    const Point centre((*g.holes)[i].x0, (*g.holes)[i].y0);
     for (const BoundaryEdge& e : mesh.edges_on(label)) {
       const Point a = mesh.vertices[e.v[0]] - centre, b = mesh.vertices[e.v[1]] - centre;
       area += std::abs(a.x() * b.y() - a.y() * b.x()) / 2;

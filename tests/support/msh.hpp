@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/mesh.hpp"
+
 namespace fsi::testing {
 
 struct HandMesh {
@@ -33,6 +35,26 @@ inline std::string msh22(const HandMesh& m) {
     out << id++ << " 2 2 " << m.lines.size() + 1 << " " << m.lines.size() + 1 << " " << t[0] << " " << t[1] << " " << t[2] << "\n";
   out << "$EndElements\n";
   return out.str();
+}
+
+// A Mesh as a HandMesh: its triangles as the surface `domain`, its boundary edges as
+// curves named by their labels (renamed by `rename`: from → to).
+inline HandMesh hand_mesh(const Mesh& m, const std::string& domain,
+                          const std::vector<std::pair<std::string, std::string>>& rename = {}) {
+  HandMesh h;
+  h.domain = domain;
+  for (const Point& p : m.vertices) h.nodes.push_back({p.x(), p.y()});
+  for (const auto& t : m.triangles) h.triangles.push_back({t[0] + 1, t[1] + 1, t[2] + 1});
+  for (std::size_t l = 0; l < m.label_names.size(); ++l) {
+    std::string name = m.label_names[l];
+    for (const auto& [from, to] : rename)
+      if (m.label_names[l] == from) name = to;
+    std::vector<std::array<int, 2>> edges;
+    for (const BoundaryEdge& e : m.boundary_edges)
+      if (e.label == static_cast<int>(l)) edges.push_back({e.v[0] + 1, e.v[1] + 1});
+    if (!edges.empty()) h.lines.emplace_back(name, std::move(edges));
+  }
+  return h;
 }
 
 }  // namespace fsi::testing
