@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "io/figure.hpp"
 #include "io/vtu.hpp"
 #include "run/structure_outputs.hpp"
 
@@ -42,14 +41,18 @@ std::vector<std::pair<Rgb, std::string>> draw_box_sides(Figure& fig, const Fluid
 
 }  // namespace
 
+WorldBox fluid_figure_box(const FluidParams& f) {
+  const double pad = 0.02 * f.L1;
+  return {-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad};
+}
+
 void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
                      const FluidSolution& s, const Mesh& deformed_structure,
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note) {
   const FluidParams& f = *c.fluid;
-  const double pad = 0.02 * f.L1;
-  const WorldBox box{-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad};
-  Figure fig(box, 520, title);
+  const WorldBox box = fluid_figure_box(f);
+  Figure fig(box, kFluidFigureWidth, title);
   fig.note(note);
   const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
   fig.shade(fluid_mesh, magnitude, 0.0, magnitude.maxCoeff());

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "fluid/penalised_stokes.hpp"
+#include "io/figure.hpp"
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 
@@ -19,5 +20,9 @@ void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_m
                      const FluidSolution& s, const Mesh& deformed_structure,
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note);
+// That picture's world box (the fluid box with a 2 % margin) and plot width in pixels:
+// Figure(fluid_figure_box(f), kFluidFigureWidth, ...).pixel(x) is where x is drawn.
+WorldBox fluid_figure_box(const FluidParams& f);
+inline constexpr int kFluidFigureWidth = 520;
 
 }  // namespace fsi
