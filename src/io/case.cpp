@@ -147,6 +147,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.geo = resolve_path(s.text("geo", ""), case_path);
   p.shape = s.choice("shape", !p.mesh.empty() ? "mesh" : !p.geo.empty() ? "geo" : "rectangle",
                      {"rectangle", "mesh", "geo", "none"});
+  p.model = s.choice("model", p.model, {"linear", "saint-venant-kirchhoff", "neo-hookean"});
   check_shape_files(p, origin);
   s.reject_unknown();
 }
@@ -325,6 +326,7 @@ std::string to_toml(const Case& c) {
   if (s.rectangle() || s.extent_given) st.insert("L", s.L), st.insert("H", s.H);  // a file's own extent otherwise
   if (!s.mesh.empty()) st.insert("mesh", s.mesh);
   if (!s.geo.empty()) st.insert("geo", s.geo);
+  if (s.model != "linear") st.insert("model", s.model);  // the default stays unwritten (Table 1's case.toml)
   t.insert("structure", st);
   const auto& o = c.obstacle;
   if (!c.obstacles_given) {

@@ -23,6 +23,8 @@ struct StructureParams {
   double h = 0.015;              // hS
   std::string mesh;              // optional .msh file (resolved path)
   std::string geo;               // the .geo script of shape "geo" (resolved path)
+  // SPEC §11: "linear" (eq. 16, the paper) | "saint-venant-kirchhoff" | "neo-hookean".
+  std::string model = "linear";
   bool rectangle() const { return shape == "rectangle"; }
   // The given file (mesh or script), for messages; empty for the rectangle.
   const std::string& file() const { return shape == "geo" ? geo : mesh; }

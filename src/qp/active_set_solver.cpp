@@ -1,5 +1,7 @@
 #include "qp/active_set_solver.hpp"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <set>
 
@@ -20,17 +22,39 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
     throw QpError("active-set: operator and constraint sizes do not match");
   require_finite(A, "active-set", "the operator A_S");
   require_finite(C, "active-set", "the constraint matrix C_S");
+  // The same pattern as before (a Newton step's tangent, SPEC §11): the symbolic
+  // analysis is kept and only the numeric factorisation redone.
+  const bool same_pattern = factorised() && A.nonZeros() == A_.nonZeros() && A.rows() == A_.rows() &&
+                            std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1, A_.outerIndexPtr()) &&
+                            std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), A_.innerIndexPtr());
   A_ = A;
-  cholesky_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
-  cholesky_->compute(A_);
-  if (cholesky_->info() != Eigen::Success)
+  bool ok = false;
+  if (refactorise_often) {
+    cholesky_.reset();
+    if (!(same_pattern && simplicial_)) {
+      simplicial_ = std::make_unique<Eigen::SimplicialLLT<SparseMatrix>>();
+      simplicial_->analyzePattern(A_);
+    }
+    simplicial_->factorize(A_);
+    ok = simplicial_->info() == Eigen::Success;
+  } else {
+    simplicial_.reset();
+    if (same_pattern && cholesky_) {
+      cholesky_->factorize(A_);
+    } else {
+      cholesky_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
+      cholesky_->compute(A_);
+    }
+    ok = cholesky_->info() == Eigen::Success;
+  }
+  if (!ok)
     throw QpError("active-set: Cholesky factorisation of A_S failed (not positive definite: "
                   "is the structure clamped?)");
   set_constraints(C);
 }
 
 void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
-  if (!cholesky_) throw QpError("active-set: set_constraints before set_operator");
+  if (!factorised()) throw QpError("active-set: set_constraints before set_operator");
   if (C.cols() != A_.rows()) throw QpError("active-set: constraint and operator sizes do not match");
   require_finite(C, "active-set", "the constraint matrix C_S");
   C_ = C;
@@ -42,7 +66,7 @@ void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
   for (Eigen::Index j0 = 0; j0 < m; j0 += block) {
     const Eigen::Index nb = std::min(block, m - j0);
     const Eigen::MatrixXd rhs = Eigen::MatrixXd(Ct.middleCols(j0, nb));
-    const Eigen::MatrixXd Z = cholesky_->solve(rhs);
+    const Eigen::MatrixXd Z = solve_A(rhs);
     S_.middleCols(j0, nb) = C_ * Z;
   }
   S_ = 0.5 * (S_ + S_.transpose()).eval();  // symmetric to round-off
@@ -104,14 +128,14 @@ Eigen::VectorXd ActiveSetSolver::lawson_hanson(const Eigen::VectorXd& d, int& it
 
 QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
                                 const QpResult* warm) {
-  if (!cholesky_) throw QpError("active-set: solve before set_operator");
+  if (!factorised()) throw QpError("active-set: solve before set_operator");
   if (b.size() != A_.rows() || c.size() != C_.rows())
     throw QpError("active-set: load or bound has the wrong size");
   require_finite(b, "active-set", "the load b_S");
   require_finite(c, "active-set", "the bound c_lb");
   used_fallback_ = false;
   const Eigen::Index m = C_.rows();
-  const Eigen::VectorXd d = C_ * cholesky_->solve(b) - c;  // slack at α = 0
+  const Eigen::VectorXd d = C_ * Eigen::VectorXd(solve_A(b)) - c;  // slack at α = 0
 
   QpResult result;
   result.active.assign(m, false);
@@ -156,7 +180,7 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
     if (progress) progress("active-set: cycling detected, finished by Lawson-Hanson");
   }
   result.alpha = alpha.cwiseMax(0.0);
-  result.x = cholesky_->solve(b + C_.transpose() * result.alpha);
+  result.x = solve_A(Eigen::VectorXd(b + C_.transpose() * result.alpha));
   result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, alpha);
   result.status = used_fallback_ ? "converged (Lawson-Hanson fallback)" : "converged";
   if (!(result.kkt.max() <= kkt_tolerance))

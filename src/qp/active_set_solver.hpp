@@ -15,6 +15,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <memory>
 
 #include "qp/qp_problem.hpp"
@@ -41,6 +42,12 @@ class ActiveSetSolver final : public QpSolver {
   // LLᵀ, not CHOLMOD's automatic choice: its LDLᵀ accepts negative pivots, and A_S
   // must be positive definite.
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> cholesky_;
+  std::unique_ptr<Eigen::SimplicialLLT<SparseMatrix>> simplicial_;  // refactorise_often
+  bool factorised() const { return cholesky_ || simplicial_; }
+  template <class Rhs>
+  Eigen::MatrixXd solve_A(const Rhs& rhs) const {
+    return simplicial_ ? Eigen::MatrixXd(simplicial_->solve(rhs)) : Eigen::MatrixXd(cholesky_->solve(rhs));
+  }
   Eigen::MatrixXd S_;
   Eigen::VectorXd kappa_;
   bool used_fallback_ = false;

@@ -81,6 +81,12 @@ class QpSolver {
   std::function<void(const std::string&)> progress;
   // Acceptance threshold on the largest relative KKT residual.
   double kkt_tolerance = 1e-9;
+  // The operator is replaced often (each Newton step of a hyperelastic structure,
+  // SPEC §11): the active-set solver then factorises it by Eigen's simplicial LLᵀ
+  // (AMD order) instead of CHOLMOD's supernodal one, whose BLAS threads cost more
+  // than the factorisation at these sizes (§7.2 beam, 154 dofs: 243 µs for a 2-step
+  // pass, most of it thread wake-ups under perf). Set before set_operator.
+  bool refactorise_often = false;
 };
 
 }  // namespace fsi

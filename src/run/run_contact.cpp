@@ -89,6 +89,7 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   add_gap_summary(j["contact"], c, s, solution);
   j["contact"]["linearisations"] = s.gap->linearisations();
   j["kkt"] = to_json(solution.qp.kkt);
+  if (c.structure.model != "linear") j["newton"] = newton_json(solution.newton);
   r.report = contact_report(c, stats, s, solution, contact, max_u, u2.minCoeff());
 
   write_outputs(

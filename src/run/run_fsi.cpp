@@ -214,6 +214,7 @@ Json fsi_summary(const Case& c, FsiSetup& su, const CouplingResult& result, cons
     j["contact"] = to_json(*m.contact);
     add_gap_summary(j["contact"], c, s, result.structure);
     j["kkt"] = to_json(result.structure.qp.kkt);
+    if (c.structure.model != "linear") j["newton"] = newton_json(result.structure.newton);  // the last pass's
     j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", result.projections}};
   }
   if (c.obstacles_given) j["obstacles"] = obstacle_forces_json(c, su.f);  // the fluid's force on each (SPEC §10)

@@ -65,6 +65,7 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   } catch (const QpError& e) {
     throw SolverFailure(std::string("structure: ") + e.what());
   }
+  if (c.structure.model != "linear") s.solver->set_material({material_model(c.structure.model), s.lame});
   const Point f = c.structure.f, h_N = c.structure.h_N;
   const Mesh& m = s.mesh();
   s.b_applied = assemble_volume_load(m, [f](const Point&) { return f; }, 1) +
@@ -87,6 +88,11 @@ void add_gap_summary(nlohmann::ordered_json& contact, const Case& c, const Struc
     list.push_back(e);
   }
   contact["obstacles"] = list;
+}
+
+nlohmann::ordered_json newton_json(const NewtonReport& n) {
+  return {{"steps", n.steps}, {"load_steps", n.load_steps}, {"cuts", n.cuts}, {"residual", n.residual},
+          {"residual_history", n.history}};
 }
 
 }  // namespace fsi

@@ -41,4 +41,8 @@ std::unique_ptr<QpSolver> make_qp_solver(const std::string& name);
 // obstacles[i].{active_nodes, x_min, x_max, force} (SPEC §9).
 void add_gap_summary(nlohmann::ordered_json& contact, const Case& c, const StructureSetup& s, const ContactSolution& solution);
 
+// summary.json's "newton" of a nonlinear structure (SPEC §11): the last solve's Newton
+// steps (each one QP), load steps, line-search cuts and final relative residual.
+nlohmann::ordered_json newton_json(const NewtonReport& n);
+
 }  // namespace fsi

@@ -15,7 +15,7 @@ Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
 
 Json to_json(const StructureParams& s) {
   return {{"shape", s.shape}, {"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)},
-          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}};
+          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}, {"model", s.model}};
 }
 
 Json to_json(const ObstacleParams& o) {

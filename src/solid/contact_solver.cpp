@@ -62,6 +62,7 @@ ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame, ContactC
                                            const std::vector<int>& fixed_dofs, QpSolver& solver)
     : mesh_(std::move(mesh)),
       gamma_c_label_(gamma_c_label),
+      material_{MaterialModel::linear, lame},
       A_S_(assemble_elasticity(mesh_, lame)),
       contact_(std::move(contact)),
       solver_(solver) {
@@ -87,6 +88,7 @@ void ElasticContactSolver::set_constraint(ContactConstraint contact) {
 
 ContactSolution ElasticContactSolver::solve(const Eigen::VectorXd& b_S,
                                             const ContactSolution* warm) {
+  if (material_.model != MaterialModel::linear) return solve_nonlinear(b_S, warm);
   ContactSolution out;
   out.qp = solver_.solve(b_S(free_dofs_), contact_.c_lb, warm ? &warm->qp : nullptr);
   out.u = Eigen::VectorXd::Zero(b_S.size());
@@ -112,7 +114,13 @@ ContactSolution ElasticContactSolver::at_rest() const {
 Eigen::VectorXd ElasticContactSolver::project(const Eigen::VectorXd& z) {
   const Eigen::VectorXd slack = contact_.C_S * z - contact_.c_lb;
   if (slack.size() == 0 || slack.minCoeff() >= 0) return z;
-  return solve(A_S_ * z).u;
+  if (material_.model == MaterialModel::linear) return solve(A_S_ * z).u;
+  // In the A_S-norm whatever the material (the relaxation's norm): the QP with A_S,
+  // whose operator the next Newton step replaces again.
+  solver_.set_operator(A_free_, C_free_);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(z.size());
+  u(free_dofs_) = solver_.solve((A_S_ * z)(free_dofs_), contact_.c_lb).x;
+  return u;
 }
 
 std::vector<int> active_vertices(const ElasticContactSolver& solver, const ContactSolution& s) {

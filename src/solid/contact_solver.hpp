@@ -4,18 +4,31 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "mesh/mesh.hpp"
 #include "qp/qp_problem.hpp"
 #include "solid/contact.hpp"
 #include "solid/elasticity.hpp"
+#include "solid/free_dof_assembly.hpp"
+#include "solid/hyperelastic.hpp"
 
 namespace fsi {
+
+// How Newton's method ended for a nonlinear material (SPEC §11; zeros for "linear").
+struct NewtonReport {
+  int steps = 0;        // Newton steps (each one QP), over all load steps
+  int load_steps = 0;   // 1: the whole load at once; more if Newton alone failed
+  int cuts = 0;         // step halvings of the line search
+  double residual = 0;  // ‖f_int(u) − b − Cᵀα‖ / its scale at the end
+  std::vector<double> history;  // that residual after each step (of the last load step)
+};
 
 struct ContactSolution {
   Eigen::VectorXd u;       // displacement, 2nv dofs (paper ordering)
   QpResult qp;             // on the free dofs; qp.alpha are the contact multipliers
+  NewtonReport newton;
 };
 
 class ElasticContactSolver {
@@ -29,6 +42,18 @@ class ElasticContactSolver {
   ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
                        const std::vector<int>& fixed_dofs, QpSolver& solver);
 
+  // A nonlinear material (structure.model, SPEC §11): solve() is then Newton's method
+  // with the contact constraint in every step, each step one QP with the tangent, to a
+  // relative residual `newton_tol`. A_S (the tangent at u = 0) stays the operator of
+  // project() and of the relaxation's norm. Call before the first solve.
+  void set_material(const Material& material);
+  const Material& material() const { return material_; }
+  double newton_tol = 1e-10;
+  int newton_max_steps = 30;
+
+  // min ½uᵀA_S u − b_Sᵀu s.t. C_S u ≥ c_lb (linear); the nonlinear equilibrium
+  // f_int(u) = b_S + C_Sᵀα with the same constraint (another material). `warm`: an
+  // earlier solution, the start of the active set (and of Newton).
   ContactSolution solve(const Eigen::VectorXd& b_S, const ContactSolution* warm = nullptr);
 
   // The undeformed state u = 0 with no contact (α = 0, no active row): the state
@@ -50,8 +75,16 @@ class ElasticContactSolver {
   QpSolver& qp_solver() { return solver_; }
 
  private:
+  ContactSolution solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm);
+  bool newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report);
+  double equilibrium_residual(const Eigen::VectorXd& f, const Eigen::VectorXd& b, const Eigen::VectorXd& alpha) const;
+
   Mesh mesh_;
   int gamma_c_label_;
+  Material material_;
+  std::string last_newton_failure_;  // the QP's words when a Newton step failed
+  std::unique_ptr<FreeDofAssembler> assembler_;  // a nonlinear material's f_int and K_T
+  SparseMatrix K_;                                // the tangent (A_free_'s pattern)
   SparseMatrix A_S_;
   ContactConstraint contact_;
   std::vector<int> free_dofs_;
