@@ -5,7 +5,7 @@
 // stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}):
 // FixedPointLoop (fixed_point_loop.hpp) around this fluid's map H, as FixedPointCoupling
 // around the penalised one (χ, the penalised solve, eq. 33). A pass whose QP
-// finds contact is refused: the fluid between the structure and the obstacle
+// finds contact is refused: the fluid between the structure and an obstacle
 // cannot be body-fitted.
 #pragma once
 

@@ -21,7 +21,8 @@ double distance_to_hole(const std::vector<Point>& x, const FluidHole& hole) {
   if (!hole.corners.empty()) return polygon_distance(x, hole.corners);
   const Point centre(hole.x0, hole.y0);
   double d = INFINITY;
-  for (std::size_t k = 0; k + 1 < x.size(); ++k) d = std::min(d, distance_to_segment(centre, x[k], x[k + 1]) - hole.r);
+  for (std::size_t k = 0; k + 1 < x.size(); ++k)
+    d = std::min(d, distance_to_segment(centre, x[k], x[k + 1]) - hole.r);
   return d;
 }
 
@@ -69,10 +70,12 @@ void BodyFittedFluid::check_gap(const std::vector<Point>& x, double& gap) const 
     gap = std::min({gap, x[k].y() + b.H2, b.L1 - x[k].x(), b.H1 - x[k].y()});
   }
   std::string nearest = "the box";
-  const std::vector<FluidHole> holes = b.holes ? *b.holes : std::vector<FluidHole>{{b.x0, b.y0, b.r}};
+  const std::vector<FluidHole> holes =
+      b.holes ? *b.holes : std::vector<FluidHole>{{b.x0, b.y0, b.r}};
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const double d = distance_to_hole(x, holes[i]);
-    if (d < gap) gap = d, nearest = b.holes ? "obstacles[" + std::to_string(i + 1) + "]" : "the obstacle";
+    if (d < gap)
+      gap = d, nearest = b.holes ? "obstacles[" + std::to_string(i + 1) + "]" : "the obstacle";
   }
   if (!(gap >= p_.min_gap * b.h)) {
     char text[600];

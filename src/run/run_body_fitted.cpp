@@ -183,7 +183,8 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
     j["contact"] = to_json(*m.contact);
-    if (s.gap->normal()) add_gap_summary(j["contact"], c, s, result.structure);  // min_gap (SPEC §9)
+    if (s.gap->normal())
+      add_gap_summary(j["contact"], c, s, result.structure);  // min_gap (SPEC §9)
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme},
                        {"omega0", c.coupling.omega},
@@ -192,7 +193,8 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
   // The fluid's force on each hole by the residual method (SPEC §10), on the last
   // pass's mesh and solution; κ empty: no penalty.
   if (c.obstacles_given)
-    j["obstacles"] = hole_forces_json(c, last ? *last->mesh : s.mesh(), last ? &last->solution : nullptr, {});
+    j["obstacles"] =
+        hole_forces_json(c, last ? *last->mesh : s.mesh(), last ? &last->solution : nullptr, {});
   j["fluid"] = fluid_json(result, last);
   r.report = report(c, result, m.displacement->max, m.fluid_mesh, fluid_only);
   r.exit_status = exit_status_of(result);

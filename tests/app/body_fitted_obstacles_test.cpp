@@ -15,7 +15,8 @@ namespace fsi {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kCase = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/flap-between-two-disks.toml'";
+const std::string kCase =
+    std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/flap-between-two-disks.toml'";
 const std::string kQuiet = " --set output.png=false --set output.vtu=false";
 
 nlohmann::json run_ok(const std::string& args, const fs::path& dir, const std::string& out) {
@@ -28,10 +29,11 @@ TEST(BodyFittedObstacles, TheFlapBetweenTwoDisksWithoutContact) {
   // The beam neutrally buoyant (structure.f = fluid.f) in a slow inflow: it bends by
   // under a millimetre, 2 cm from either disk.
   const fs::path dir = testing::scratch_dir("body-fitted-two-disks");
-  const auto j = run_ok(kCase +
-                            " --set fluid.method=body-fitted --set fluid.h=0.02 --set structure.h=0.03 "
-                            "--set fluid.Vmax=0.5 --set structure.f=[0,-981] --set coupling.tol=1e-8",
-                        dir, "res");
+  const auto j =
+      run_ok(kCase +
+                 " --set fluid.method=body-fitted --set fluid.h=0.02 --set structure.h=0.03 "
+                 "--set fluid.Vmax=0.5 --set structure.f=[0,-981] --set coupling.tol=1e-8",
+             dir, "res");
   EXPECT_EQ(j["status"], "converged");
   EXPECT_EQ(j["contact"]["active_nodes"], 0);
   EXPECT_EQ(j["contact"]["gap"], "normal");
@@ -56,11 +58,13 @@ double force_difference(const fs::path& dir, double h) {
   std::snprintf(sizes, sizeof sizes, " --set fluid.h=%g --set structure.h=%g", h, 1.5 * h);
   const std::string common = kCase + sizes + " --set coupling.max_iterations=0 --set fluid.f=[0,0]";
   const auto bf = run_ok(common + " --set fluid.method=body-fitted", dir, "bf");
-  const auto pen = run_ok(common + " --set fluid.method=penalised --set coupling.eps=1e-8", dir, "pen");
+  const auto pen =
+      run_ok(common + " --set fluid.method=penalised --set coupling.eps=1e-8", dir, "pen");
   double sum = 0;
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < 2; ++k) {
-      const double d = bf["obstacles"][i]["force"][k].get<double>() - pen["obstacles"][i]["force"][k].get<double>();
+      const double d = bf["obstacles"][i]["force"][k].get<double>() -
+                       pen["obstacles"][i]["force"][k].get<double>();
       sum += d * d;
     }
   return std::sqrt(sum);
@@ -75,7 +79,8 @@ TEST(BodyFittedObstacles, TheObstacleForcesAgreeWithThePenalisedMethodAsTheMeshI
   // must divide it by more than 2 (rate above 1); a force computed on the wrong hole,
   // or with the penalty's term in the body-fitted residual, does not converge.
   const fs::path dir = testing::scratch_dir("body-fitted-obstacle-forces");
-  const double d1 = force_difference(dir, 0.02), d2 = force_difference(dir, 0.01), d3 = force_difference(dir, 0.005);
+  const double d1 = force_difference(dir, 0.02), d2 = force_difference(dir, 0.01),
+               d3 = force_difference(dir, 0.005);
   EXPECT_GT(d1 / d2, 2.0) << d1 << " " << d2;
   EXPECT_GT(d2 / d3, 2.0) << d2 << " " << d3;
   EXPECT_LT(d3, 0.02 * 0.41) << "within 2 % of the larger force on the finest mesh";
@@ -83,11 +88,14 @@ TEST(BodyFittedObstacles, TheObstacleForcesAgreeWithThePenalisedMethodAsTheMeshI
 
 TEST(BodyFittedObstacles, RefusesAStructureThatComesTooCloseNamingTheObstacle) {
   const fs::path dir = testing::scratch_dir("body-fitted-obstacle-too-close");
-  const std::string coarse = " --set fluid.method=body-fitted --set fluid.h=0.02 --set structure.h=0.03" + kQuiet;
+  const std::string coarse =
+      " --set fluid.method=body-fitted --set fluid.h=0.02 --set structure.h=0.03" + kQuiet;
   // Heavier than the fluid, the beam sinks towards the lower disk: at the third pass it
   // is 2.7 mm from it, below 0.25 hF = 5 mm (measured).
-  const testing::CliRun sinking =
-      testing::run_cli("run " + kCase + coarse + " --set fluid.Vmax=1 --set structure.f=[0,-3000] --set coupling.tol=1e-8 --out a", dir);
+  const testing::CliRun sinking = testing::run_cli(
+      "run " + kCase + coarse +
+          " --set fluid.Vmax=1 --set structure.f=[0,-3000] --set coupling.tol=1e-8 --out a",
+      dir);
   EXPECT_EQ(sinking.status, 1) << sinking.err;
   const auto a = nlohmann::json::parse(testing::slurp(dir / "a/summary.json"));
   EXPECT_EQ(a["status"], "failed");
@@ -96,17 +104,21 @@ TEST(BodyFittedObstacles, RefusesAStructureThatComesTooCloseNamingTheObstacle) {
   EXPECT_NE(why.find("contact cannot be body-fitted"), std::string::npos) << why;
   // A polygon 3 mm above the beam at rest: refused at the first pass (the polygon's
   // distance to the outline), naming it.
-  std::string text = testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/cases/flap-between-two-disks.toml");
+  std::string text =
+      testing::slurp(std::string(FSICONTACT_SOURCE_DIR) + "/cases/flap-between-two-disks.toml");
   const std::string upper = "shape = \"disk\"\nx0 = 0.15\ny0 = 0.1\nr = 0.05\n";
   ASSERT_NE(text.find(upper), std::string::npos);
-  text.replace(text.find(upper), upper.size(),
-               "shape = \"polygon\"\npoints = [[0.1, 0.033], [0.2, 0.033], [0.2, 0.08], [0.1, 0.08]]\n");
+  text.replace(
+      text.find(upper), upper.size(),
+      "shape = \"polygon\"\npoints = [[0.1, 0.033], [0.2, 0.033], [0.2, 0.08], [0.1, 0.08]]\n");
   std::ofstream(dir / "block.toml") << text;
   const testing::CliRun block = testing::run_cli("run block.toml" + coarse + " --out b", dir);
   EXPECT_EQ(block.status, 1) << block.err;
   const auto b = nlohmann::json::parse(testing::slurp(dir / "b/summary.json"));
   EXPECT_EQ(b["status"], "failed");
-  EXPECT_NE(b["failure"].get<std::string>().find("within 0.003 m of obstacles[2]"), std::string::npos) << b["failure"];
+  EXPECT_NE(b["failure"].get<std::string>().find("within 0.003 m of obstacles[2]"),
+            std::string::npos)
+      << b["failure"];
 }
 
 }  // namespace
