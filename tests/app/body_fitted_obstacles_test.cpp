@@ -86,22 +86,26 @@ TEST(BodyFittedObstacles, TheObstacleForcesAgreeWithThePenalisedMethodAsTheMeshI
   EXPECT_LT(d3, 0.02 * 0.41) << "within 2 % of the larger force on the finest mesh";
 }
 
+// A run that ends as failed (exit 1, summary.json written) with a failure naming `what`.
+void expect_failure_naming(const std::string& args, const fs::path& dir, const std::string& what) {
+  const testing::CliRun r = testing::run_cli("run " + args + " --out res", dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
+  EXPECT_EQ(j["status"], "failed");
+  const std::string why = j["failure"];
+  EXPECT_NE(why.find(what), std::string::npos) << why;
+  EXPECT_NE(why.find("contact cannot be body-fitted"), std::string::npos) << why;
+}
+
 TEST(BodyFittedObstacles, RefusesAStructureThatComesTooCloseNamingTheObstacle) {
   const fs::path dir = testing::scratch_dir("body-fitted-obstacle-too-close");
   const std::string coarse =
       " --set fluid.method=body-fitted --set fluid.h=0.02 --set structure.h=0.03" + kQuiet;
   // Heavier than the fluid, the beam sinks towards the lower disk: at the third pass it
   // is 2.7 mm from it, below 0.25 hF = 5 mm (measured).
-  const testing::CliRun sinking = testing::run_cli(
-      "run " + kCase + coarse +
-          " --set fluid.Vmax=1 --set structure.f=[0,-3000] --set coupling.tol=1e-8 --out a",
-      dir);
-  EXPECT_EQ(sinking.status, 1) << sinking.err;
-  const auto a = nlohmann::json::parse(testing::slurp(dir / "a/summary.json"));
-  EXPECT_EQ(a["status"], "failed");
-  const std::string why = a["failure"];
-  EXPECT_NE(why.find("of obstacles[1]"), std::string::npos) << why;
-  EXPECT_NE(why.find("contact cannot be body-fitted"), std::string::npos) << why;
+  expect_failure_naming(
+      kCase + coarse + " --set fluid.Vmax=1 --set structure.f=[0,-3000] --set coupling.tol=1e-8",
+      dir, "of obstacles[1]");
   // A polygon 3 mm above the beam at rest: refused at the first pass (the polygon's
   // distance to the outline), naming it.
   std::string text =
@@ -111,14 +115,10 @@ TEST(BodyFittedObstacles, RefusesAStructureThatComesTooCloseNamingTheObstacle) {
   text.replace(
       text.find(upper), upper.size(),
       "shape = \"polygon\"\npoints = [[0.1, 0.033], [0.2, 0.033], [0.2, 0.08], [0.1, 0.08]]\n");
-  std::ofstream(dir / "block.toml") << text;
-  const testing::CliRun block = testing::run_cli("run block.toml" + coarse + " --out b", dir);
-  EXPECT_EQ(block.status, 1) << block.err;
-  const auto b = nlohmann::json::parse(testing::slurp(dir / "b/summary.json"));
-  EXPECT_EQ(b["status"], "failed");
-  EXPECT_NE(b["failure"].get<std::string>().find("within 0.003 m of obstacles[2]"),
-            std::string::npos)
-      << b["failure"];
+  const fs::path block = dir / "block";
+  fs::create_directories(block);
+  std::ofstream(block / "block.toml") << text;
+  expect_failure_naming("block.toml" + coarse, block, "within 0.003 m of obstacles[2]");
 }
 
 }  // namespace
