@@ -18,7 +18,9 @@ namespace {
 // contact.
 class BodyFittedMap final : public CoupledMap {
  public:
-  BodyFittedMap(const BodyFittedCoupling::Parts& p, BodyFittedStep& last) : p_(p), last_(last) {}
+  BodyFittedMap(const BodyFittedCoupling::Parts& p, BodyFittedStep& last,
+                const std::function<void(const Eigen::VectorXd&)>& relinearise)
+      : p_(p), last_(last), relinearise_(relinearise) {}
 
   MapValue operator()(const Eigen::VectorXd& u, int k, const ContactSolution* warm, IterationRecord& rec) override {
     auto fail = [k](const std::string& phase, const std::string& what) {
@@ -31,11 +33,14 @@ class BodyFittedMap final : public CoupledMap {
     if (!b_S.allFinite()) fail("the force transfer", "non-finite load on the structure");
     const Stopwatch clock;  // step 4: the contact QP, warm-started
     MapValue value;
-    value.structure = guarded("the contact QP", k, [&] { return p_.structure.solve(b_S, warm); });
+    value.structure = guarded("the contact QP", k, [&] {
+      if (relinearise_) relinearise_(u);
+      return p_.structure.solve(b_S, warm);
+    });
     if (!value.structure.u.allFinite()) fail("the contact QP", "non-finite displacement");
     const int active = value.structure.qp.active_count();
     if (active > 0)
-      fail("the body-fitted fluid step", "the structure touches the obstacle (" + std::to_string(active) +
+      fail("the body-fitted fluid step", "the structure touches an obstacle (" + std::to_string(active) +
                                              (active == 1 ? " active contact row" : " active contact rows") +
                                              "): contact cannot be body-fitted; fluid.method = \"body-fitted\" is a "
                                              "check for configurations without contact (use \"penalised\")");
@@ -57,6 +62,7 @@ class BodyFittedMap final : public CoupledMap {
  private:
   const BodyFittedCoupling::Parts& p_;
   BodyFittedStep& last_;
+  const std::function<void(const Eigen::VectorXd&)>& relinearise_;
 };
 
 }  // namespace
@@ -65,7 +71,7 @@ BodyFittedCoupling::BodyFittedCoupling(Parts parts, double tol, int max_iteratio
     : p_(parts), tol_(tol), max_iterations_(max_iterations), M_(assemble_vector_mass(parts.structure.mesh())) {}
 
 CouplingResult BodyFittedCoupling::run() {
-  BodyFittedMap H(p_, last_fluid_);
+  BodyFittedMap H(p_, last_fluid_, relinearise);
   FixedPointLoop loop(H, p_.relaxation, M_, tol_, max_iterations_);
   loop.progress = progress;
   return loop.run(initial);

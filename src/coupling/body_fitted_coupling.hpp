@@ -5,7 +5,7 @@
 // stop if ‖ũ^{k+1} − u^k‖_{L²(Ω_S0)} < tol, else u^{k+1} = relaxation(u^k, ũ^{k+1}):
 // FixedPointLoop (fixed_point_loop.hpp) around this fluid's map H, as FixedPointCoupling
 // around the penalised one (χ, the penalised solve, eq. 33). A pass whose QP
-// finds contact is refused: the fluid between the structure and the obstacle
+// finds contact is refused: the fluid between the structure and an obstacle
 // cannot be body-fitted.
 #pragma once
 
@@ -30,6 +30,9 @@ class BodyFittedCoupling {
   std::function<void(const std::string&)> progress;  // one line per pass
   // u⁰ instead of the structure at rest, as FixedPointCoupling::initial.
   Eigen::VectorXd initial;
+  // contact.gap = "normal" (SPEC §9): the constraint moved to the pass's u before its
+  // QP, as FixedPointCoupling::relinearise. The QP must still find no contact.
+  std::function<void(const Eigen::VectorXd& u)> relinearise;
 
   // As FixedPointCoupling::run: a failed phase stops the loop and is named in
   // CouplingResult::failure; the last good state is kept.
@@ -39,7 +42,6 @@ class BodyFittedCoupling {
   const BodyFittedStep* last_fluid() const { return last_fluid_.mesh ? &last_fluid_ : nullptr; }
 
  private:
-
   Parts p_;
   double tol_;
   int max_iterations_;

@@ -7,18 +7,23 @@
 #include "common/errors.hpp"
 #include "common/timer.hpp"
 #include "fluid/stokes_residual.hpp"
+#include "mesh/polygon.hpp"
 #include "mesh/structure_outline.hpp"
 #include "solid/elasticity.hpp"
 
 namespace fsi {
 namespace {
 
-// Distance from c to the segment [a, b].
-double distance_to_segment(const Point& c, const Point& a, const Point& b) {
-  const Point e = b - a;
-  const double t =
-      e.squaredNorm() > 0 ? std::clamp((c - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * e - c).norm();
+// The distance from the deformed outline (the polygon of φ(Ω_S0), closed along x = 0)
+// to one hole of D: to a disk's circle, centre distance − r; to a polygon, the
+// distance between the two regions (0 if they meet).
+double distance_to_hole(const std::vector<Point>& x, const FluidHole& hole) {
+  if (!hole.corners.empty()) return polygon_distance(x, hole.corners);
+  const Point centre(hole.x0, hole.y0);
+  double d = INFINITY;
+  for (std::size_t k = 0; k + 1 < x.size(); ++k)
+    d = std::min(d, distance_to_segment(centre, x[k], x[k + 1]) - hole.r);
+  return d;
 }
 
 }  // namespace
@@ -48,13 +53,13 @@ std::vector<Point> BodyFittedFluid::deformed_outline(const Eigen::VectorXd& u) c
   return x;
 }
 
-// The smallest distance from φ(Γ_u) to what it must not reach: the obstacle's circle
-// Σ5 and the sides Σ2, Σ3, Σ4 (Σ1 holds the clamp: the outline starts and ends there).
-// Below min_gap·hF the fluid between would be thinner than its triangles, and the
-// structure is about to touch: the body-fitted method does not model contact.
+// The smallest distance from φ(Γ_u) to what it must not reach: every hole of D (Σ5:
+// the obstacle's circle, or each of [[obstacles]], SPEC §9) and the sides Σ2, Σ3, Σ4
+// (Σ1 holds the clamp: the outline starts and ends there). Below min_gap·hF the fluid
+// between would be thinner than its triangles, and the structure is about to touch:
+// the body-fitted method does not model contact, even with contact.gap = "normal".
 void BodyFittedFluid::check_gap(const std::vector<Point>& x, double& gap) const {
   const FluidGeometry& b = p_.box;
-  const Point centre(b.x0, b.y0);
   gap = INFINITY;
   for (std::size_t k = 0; k < x.size(); ++k) {
     const bool end = k == 0 || k + 1 == x.size();
@@ -63,17 +68,23 @@ void BodyFittedFluid::check_gap(const std::vector<Point>& x, double& gap) const 
           "the deformed structure crosses the wall x = 0 (Sigma_1) at a vertex; fluid.method = "
           "\"body-fitted\" cannot mesh the fluid around it");
     gap = std::min({gap, x[k].y() + b.H2, b.L1 - x[k].x(), b.H1 - x[k].y()});
-    if (k + 1 < x.size()) gap = std::min(gap, distance_to_segment(centre, x[k], x[k + 1]) - b.r);
+  }
+  std::string nearest = "the box";
+  const std::vector<FluidHole> holes =
+      b.holes ? *b.holes : std::vector<FluidHole>{{b.x0, b.y0, b.r}};
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const double d = distance_to_hole(x, holes[i]);
+    if (d < gap)
+      gap = d, nearest = b.holes ? "obstacles[" + std::to_string(i + 1) + "]" : "the obstacle";
   }
   if (!(gap >= p_.min_gap * b.h)) {
-    char text[400];
+    char text[600];
     std::snprintf(text, sizeof text,
-                  "the deformed structure comes within %.3g m of the obstacle or the box (below "
-                  "%.2g hF = %.3g m): "
+                  "the deformed structure comes within %.3g m of %s (below %.2g hF = %.3g m): "
                   "contact cannot be body-fitted; fluid.method = \"body-fitted\" is a check for "
-                  "configurations "
-                  "without contact (use \"penalised\")",
-                  gap, p_.min_gap, p_.min_gap * b.h);
+                  "configurations without contact, whose structure stays %.2g hF away from every "
+                  "obstacle and side (use \"penalised\")",
+                  gap, nearest.c_str(), p_.min_gap, p_.min_gap * b.h, p_.min_gap);
     throw SolverFailure(text);
   }
 }

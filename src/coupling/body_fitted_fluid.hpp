@@ -5,7 +5,8 @@
 // Σ1…Σ5), and the fluid's load on the structure by the residual method, node to node
 // (body_fitted_force.hpp). An independent check of the fictitious domain of §3–§4:
 // nothing of χ, ε or eq. (33) is used. It cannot mesh a closed gap: a structure near
-// the obstacle or the box is refused (SolverFailure).
+// an obstacle (any hole of D: [obstacle]'s disk, or each of [[obstacles]]) or the box
+// is refused (SolverFailure).
 //
 // Remeshing: Gmsh's mesh is a discontinuous function of the outline (its triangle count
 // changes by tens from one pass to the next), which puts a noise floor under the
@@ -30,14 +31,14 @@
 namespace fsi {
 
 struct BodyFittedFluidParams {
-  FluidGeometry box;  // D: the box, the disk, and h = hF
+  FluidGeometry box;  // D: the box, its holes (the disk, or box.holes), and h = hF
   double mu = 0;
   VectorField f;  // f_F
   // The conditions on Σ1…Σ5 for a mesh of D (the run layer's, by label); v = 0 on
   // Gamma_u is added here.
   std::function<FluidBoundaryConditions(const Mesh&)> boundary_conditions;
   PressureNormal normal = PressureNormal::reference;
-  // A gap to the obstacle or to the box's other sides below this many hF is refused:
+  // A gap to an obstacle or to the box's other sides below this many hF is refused:
   // the triangles there would be much smaller than hF, and the configuration is
   // about to touch, which this method cannot follow.
   double min_gap = 0.25;
@@ -51,7 +52,7 @@ struct BodyFittedStep {
   FluidSolution solution;
   std::vector<int> outline_nodes;  // the fluid vertex of each outline point
   Eigen::VectorXd load;            // the fluid's load on the structure, 2nv
-  double gap = INFINITY;           // from φ(outline) to the obstacle and the box's other sides, m
+  double gap = INFINITY;           // from φ(outline) to the holes and the box's other sides, m
   bool remeshed = false;           // a new Gmsh mesh (else the last one moved)
   int unknowns = 0;
   double t_mesh = 0, t_fluid = 0, t_transfer = 0;

@@ -250,29 +250,28 @@ void check_fluid_sides(const Case& c, const Origin& o) {
 }
 
 // The paper's gap is the graph of the disk's upper arc over Γ_C: it has no meaning on
-// the rest of the boundary. The body-fitted fluid cannot follow contact at all.
+// the rest of the boundary. The body-fitted fluid cannot follow contact at all: with
+// [[obstacles]] it takes "normal" (their only gap) and refuses a structure closer than
+// its min_gap·hF to any of them (BodyFittedFluid::check_gap).
 void check_contact_gap(const Case& c, const Origin& o) {
   if (c.contact.gap == "paper" && c.contact.boundary != "Gamma_C")
     fail(o, "contact.boundary", "= \"" + c.contact.boundary + "\" needs contact.gap = \"normal\" (eq. 15's graph covers Gamma_C only)",
          "\"Gamma_C\" with contact.gap = \"paper\"");
-  if (c.contact.gap == "normal" && c.fluid && c.fluid->method == "body-fitted")
-    fail(o, "contact.gap", "= \"normal\" has no contact to follow with fluid.method = \"body-fitted\" (it refuses contact)",
-         "\"paper\" with fluid.method = \"body-fitted\"");
+  if (c.contact.gap == "normal" && c.fluid && c.fluid->method == "body-fitted" && !c.obstacles_given)
+    fail(o, "contact.gap", "= \"normal\" has no contact to follow with fluid.method = \"body-fitted\" and [obstacle] (it refuses contact)",
+         "\"paper\" with fluid.method = \"body-fitted\" and [obstacle], or \"normal\" with [[obstacles]]");
 }
 
 // [[obstacles]] in a coupled run (SPEC §9): every obstacle is a hole of D: of the
 // generated box (checked with it, check_fluid_box) or of the mesh file (checked when it
-// is read, run/hole_checks.cpp), so disks and polygons; the body-fitted mesh knows
-// [obstacle]'s one disk only.
+// is read, run/hole_checks.cpp), so disks and polygons, also of the body-fitted mesh
+// (its holes Sigma_5_i, coupling/body_fitted_fluid.hpp).
 void check_fluid_obstacles(const Case& c, const Origin& o) {
   for (std::size_t i = 0; i < c.obstacles.size(); ++i)
     if (c.obstacles[i].shape == "half-plane")
       fail(o, "obstacles[" + std::to_string(i + 1) + "].shape",
            "= \"half-plane\" is for contact problems only (no [fluid]): a fluid box's obstacles are its holes",
            "\"disk\" or \"polygon\" with a [fluid] section");
-  if (c.fluid->method == "body-fitted")
-    fail(o, "fluid.method", "= \"body-fitted\" meshes the box with [obstacle]'s one disk, not [[obstacles]]",
-         "\"penalised\" with [[obstacles]]");
 }
 
 // [[obstacles]] (SPEC §9): the signed-distance gap only (eq. 15 is the graph of one

@@ -96,22 +96,34 @@ Mesh generate_fluid_mesh(const FluidGeometry& g) {
   return generate_fluid_mesh(g, {});
 }
 
-Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
-  const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
+namespace {
+
+// The box scaled by 1/u (Gmsh meshes in units of u), and the labels of its sides and
+// holes: Sigma_5_1, Sigma_5_2, ... for FluidGeometry::holes, else Sigma_5.
+FluidGeometry scaled_box(const FluidGeometry& g, double u, std::vector<std::string>& labels) {
   FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u, g.h_near / u, g.band};
   for (double& b : scaled.band) b /= u;
-  std::vector<std::string> labels = {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"};
-  if (g.holes) {
-    scaled.holes.emplace();
-    for (const FluidHole& d : *g.holes) {
-      FluidHole hole{d.x0 / u, d.y0 / u, d.r / u};
-      for (const Point& p : d.corners) hole.corners.push_back(p / u);
-      scaled.holes->push_back(std::move(hole));
-      labels.push_back("Sigma_5_" + std::to_string(scaled.holes->size()));
-    }
-  } else {
+  labels = {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"};
+  if (!g.holes) {
     labels.push_back("Sigma_5");
+    return scaled;
   }
+  scaled.holes.emplace();
+  for (const FluidHole& d : *g.holes) {
+    FluidHole hole{d.x0 / u, d.y0 / u, d.r / u};
+    for (const Point& p : d.corners) hole.corners.push_back(p / u);
+    scaled.holes->push_back(std::move(hole));
+    labels.push_back("Sigma_5_" + std::to_string(scaled.holes->size()));
+  }
+  return scaled;
+}
+
+}  // namespace
+
+Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
+  const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
+  std::vector<std::string> labels;
+  const FluidGeometry scaled = scaled_box(g, u, labels);
   return generate(
       "meshing the fluid box", [&] { return mesh_fluid_in_gmsh(scaled); }, u, labels, "D", limits);
 }
@@ -132,12 +144,13 @@ Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g, const GmshLimits& l
   if (g.outline.size() < 3) throw MeshError("the structure's outline needs at least two segments");
   const FluidGeometry& b = g.box;
   const double u = reference_length(std::max(std::abs(b.L1), std::abs(b.H1) + std::abs(b.H2)));
-  BodyFittedGeometry scaled{{b.L1 / u, b.H1 / u, b.H2 / u, b.x0 / u, b.y0 / u, b.r / u, b.h / u},
-                            g.outline};
+  std::vector<std::string> labels;
+  BodyFittedGeometry scaled{scaled_box(b, u, labels), g.outline};
   for (Point& p : scaled.outline) p /= u;
+  labels.push_back("Gamma_u");
   return generate(
       "meshing the fluid around the structure", [&] { return mesh_fluid_around_in_gmsh(scaled); },
-      u, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5", "Gamma_u"}, "D", limits);
+      u, labels, "D", limits);
 }
 
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,

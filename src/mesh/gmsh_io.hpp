@@ -65,13 +65,14 @@ inline constexpr double kBandGrowth = 0.2;
 Mesh generate_fluid_mesh(const FluidGeometry& g);
 Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits);
 
-// D minus the deformed structure (fluid.method = "body-fitted"): the box and disk of
-// `box` minus the polygon whose boundary is `outline` closed by the segment of x = 0
-// between its ends: the structure's boundary off its clamped side Γ_D, which lies on
-// Σ1. Each outline segment is one mesh edge, so the outline's points are mesh
-// vertices (the fluid's nodal forces map to the structure's vertices one to one);
-// labels Sigma_1 (x = 0 above and below the structure) ... Sigma_5 as
-// generate_fluid_mesh, and Gamma_u (the outline).
+// D minus the deformed structure (fluid.method = "body-fitted"): the box and its holes
+// (the disk, or FluidGeometry::holes: [[obstacles]], SPEC §9) of `box` minus the
+// polygon whose boundary is `outline` closed by the segment of x = 0 between its ends:
+// the structure's boundary off its clamped side Γ_D, which lies on Σ1. Each outline
+// segment is one mesh edge, so the outline's points are mesh vertices (the fluid's
+// nodal forces map to the structure's vertices one to one);
+// labels Sigma_1 (x = 0 above and below the structure) ... Sigma_5 (or Sigma_5_1, ...)
+// as generate_fluid_mesh, and Gamma_u (the outline).
 struct BodyFittedGeometry {
   FluidGeometry box;
   std::vector<Point> outline;  // from the end at x = 0 with the smaller y to the other

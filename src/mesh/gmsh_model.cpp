@@ -275,6 +275,38 @@ void cut_short_sides(const std::vector<Point>& corners, const std::vector<int>& 
       gmsh::model::mesh::setTransfiniteCurve(lines[i], 3);
 }
 
+// D's holes (FluidGeometry::holes, or the one disk) as Gmsh curves: a circle's four
+// arcs, a polygon's sides, in order.
+struct HoleCurves {
+  std::vector<FluidHole> holes;
+  std::vector<std::vector<int>> curves;
+};
+
+HoleCurves add_holes(const FluidGeometry& g) {
+  HoleCurves out{g.holes ? *g.holes : std::vector<FluidHole>{{g.x0, g.y0, g.r}}, {}};
+  for (const FluidHole& hole : out.holes)
+    out.curves.push_back(hole.corners.empty() ? add_circle(hole.x0, hole.y0, hole.r, g.h)
+                                              : add_polygon(hole.corners, g.h));
+  return out;
+}
+
+// After synchronising: every polygon side cut into at least two segments.
+void cut_short_sides(const HoleCurves& h, double size) {
+  for (std::size_t k = 0; k < h.holes.size(); ++k)
+    if (!h.holes[k].corners.empty()) cut_short_sides(h.holes[k].corners, h.curves[k], size);
+}
+
+// Σ5, and each hole's own group Sigma_5_k for its force (SPEC §10) when the holes are
+// [[obstacles]]'.
+void add_hole_groups(const FluidGeometry& g, const HoleCurves& h, std::vector<RawGroup>& groups) {
+  std::vector<int> all;
+  for (std::size_t k = 0; k < h.curves.size(); ++k) {
+    all.insert(all.end(), h.curves[k].begin(), h.curves[k].end());
+    if (g.holes) groups.push_back({1, "Sigma_5_" + std::to_string(k + 1), h.curves[k]});
+  }
+  if (!all.empty()) groups.push_back({1, "Sigma_5", all});
+}
+
 }  // namespace
 
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
@@ -286,16 +318,12 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
             c = geo::addPoint(g.L1, g.H1, 0, h), d = geo::addPoint(0, g.H1, 0, h);
   const int bottom = geo::addLine(a, b), right = geo::addLine(b, c), top = geo::addLine(c, d),
             left = geo::addLine(d, a);
-  const std::vector<FluidHole> holes = g.holes ? *g.holes : std::vector<FluidHole>{{g.x0, g.y0, g.r}};
-  std::vector<std::vector<int>> arcs;  // each hole's curves: a circle's four arcs, a polygon's sides
-  for (const FluidHole& hole : holes)
-    arcs.push_back(hole.corners.empty() ? add_circle(hole.x0, hole.y0, hole.r, h) : add_polygon(hole.corners, h));
+  const HoleCurves holes = add_holes(g);
   std::vector<int> loops = {geo::addCurveLoop({bottom, right, top, left})};
-  for (const auto& circle : arcs) loops.push_back(geo::addCurveLoop(circle));
+  for (const auto& curves : holes.curves) loops.push_back(geo::addCurveLoop(curves));
   const int surface = geo::addPlaneSurface(loops);
   geo::synchronize();
-  for (std::size_t k = 0; k < holes.size(); ++k)
-    if (!holes[k].corners.empty()) cut_short_sides(holes[k].corners, arcs[k], h);
+  cut_short_sides(holes, h);
   if (g.h_near > 0) add_band_field(g);
   mesh_2d(h, g.h_near > 0 ? MeshOptions{5, 0} : MeshOptions{});
   std::vector<RawGroup> groups = {{2, "D", {surface}},
@@ -303,12 +331,7 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
                                   {1, "Sigma_2", {bottom}},
                                   {1, "Sigma_3", {right}},
                                   {1, "Sigma_4", {top}}};
-  std::vector<int> all_arcs;  // Σ5, and each hole's own group for its force (SPEC §10)
-  for (std::size_t k = 0; k < arcs.size(); ++k) {
-    all_arcs.insert(all_arcs.end(), arcs[k].begin(), arcs[k].end());
-    if (g.holes) groups.push_back({1, "Sigma_5_" + std::to_string(k + 1), arcs[k]});
-  }
-  if (!all_arcs.empty()) groups.push_back({1, "Sigma_5", all_arcs});
+  add_hole_groups(g, holes, groups);
   return extract(std::move(groups));
 }
 
@@ -333,25 +356,22 @@ RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g) {
     loop.push_back(outline.back());
   }
   loop.push_back(left_below);
-  const int centre = geo::addPoint(box.x0, box.y0, 0, h);
-  const std::array<int, 4> quarter = {
-      // east, north, west, south
-      geo::addPoint(box.x0 + box.r, box.y0, 0, h), geo::addPoint(box.x0, box.y0 + box.r, 0, h),
-      geo::addPoint(box.x0 - box.r, box.y0, 0, h), geo::addPoint(box.x0, box.y0 - box.r, 0, h)};
-  std::vector<int> arcs;
-  for (int q = 0; q < 4; ++q)
-    arcs.push_back(geo::addCircleArc(quarter[q], centre, quarter[(q + 1) % 4]));
-  const int surface = geo::addPlaneSurface({geo::addCurveLoop(loop), geo::addCurveLoop(arcs)});
+  const HoleCurves holes = add_holes(box);  // [[obstacles]]' holes, or the one disk
+  std::vector<int> loops = {geo::addCurveLoop(loop)};
+  for (const auto& curves : holes.curves) loops.push_back(geo::addCurveLoop(curves));
+  const int surface = geo::addPlaneSurface(loops);
   geo::synchronize();
   for (int line : outline) gmsh::model::mesh::setTransfiniteCurve(line, 2);
+  cut_short_sides(holes, h);
   mesh_2d(h);
-  return extract({{2, "D", {surface}},
-                  {1, "Sigma_1", {left_above, left_below}},
-                  {1, "Sigma_2", {bottom}},
-                  {1, "Sigma_3", {right}},
-                  {1, "Sigma_4", {top}},
-                  {1, "Sigma_5", arcs},
-                  {1, "Gamma_u", outline}});
+  std::vector<RawGroup> groups = {{2, "D", {surface}},
+                                  {1, "Sigma_1", {left_above, left_below}},
+                                  {1, "Sigma_2", {bottom}},
+                                  {1, "Sigma_3", {right}},
+                                  {1, "Sigma_4", {top}}};
+  add_hole_groups(box, holes, groups);
+  groups.push_back({1, "Gamma_u", outline});
+  return extract(std::move(groups));
 }
 
 RawMesh read_in_gmsh(const std::string& path) {

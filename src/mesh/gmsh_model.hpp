@@ -27,7 +27,8 @@ void initialise_gmsh_once();
 RawMesh mesh_structure_in_gmsh(const StructureGeometry& g);
 // Physical groups D (surface), Sigma_1 ... Sigma_5 (curves).
 RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g);
-// Physical groups D, Sigma_1 ... Sigma_5 and Gamma_u (one line per outline segment).
+// Physical groups D, Sigma_1 ... Sigma_5 (and Sigma_5_k per hole of FluidGeometry::holes)
+// and Gamma_u (one line per outline segment).
 RawMesh mesh_fluid_around_in_gmsh(const BodyFittedGeometry& g);
 // A user's .geo script (ScriptGeometry, checked by geo_script.hpp) run with h
 // predefined, meshed at h: its physical groups of dimension 1 and 2. Throws (as Gmsh

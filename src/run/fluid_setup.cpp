@@ -9,6 +9,13 @@
 
 namespace fsi {
 
+std::optional<std::vector<FluidHole>> case_holes(const Case& c) {
+  if (!c.obstacles_given) return std::nullopt;
+  std::vector<FluidHole> holes;
+  for (const ObstacleSpec& b : c.obstacles) holes.push_back({b.x0, b.y0, b.r, b.points});
+  return holes;
+}
+
 Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>& band) {
   const FluidParams& f = *c.fluid;
   const ObstacleParams& o = c.obstacle;
@@ -16,10 +23,7 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
     try {
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
-      if (c.obstacles_given) {  // every obstacle a hole of D (SPEC §9; disks and polygons: check_fluid_obstacles)
-        g.holes.emplace();
-        for (const ObstacleSpec& b : c.obstacles) g.holes->push_back({b.x0, b.y0, b.r, b.points});
-      }
+      g.holes = case_holes(c);
       return generate_fluid_mesh(g);
     } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());

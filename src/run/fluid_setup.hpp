@@ -11,6 +11,7 @@
 #include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "io/case.hpp"
+#include "mesh/gmsh_io.hpp"
 #include "run/summary.hpp"
 
 namespace fsi {
@@ -21,6 +22,11 @@ struct FluidSetup {
   std::unique_ptr<ChiComputer> chi;
   std::unique_ptr<PenalisedStokes> stokes;
 };
+
+// D's holes for the generated box (FluidGeometry::holes, mesh/gmsh_io.hpp): every
+// obstacle of [[obstacles]] in case order (SPEC §9; disks and polygons:
+// check_fluid_obstacles), or nullopt for [obstacle]'s one disk.
+std::optional<std::vector<FluidHole>> case_holes(const Case& c);
 
 // Generates or reads the mesh of D: a bad user file is an InputError, a failure to
 // mesh validated geometry a SolverFailure. Depends on fluid.* and obstacle.*, and on

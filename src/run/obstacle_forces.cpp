@@ -13,7 +13,6 @@ Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolut
 }
 
 Json obstacle_forces_json(const Case& c, FluidSetup& f) {
-  Json list = Json::array();
   const FluidSolution* s = nullptr;
   if (f.stokes->has_solution()) {
     try {
@@ -22,13 +21,20 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f) {
       s = nullptr;
     }
   }
-  const Eigen::VectorXd kappa = f.stokes->last_solution_chi() / f.stokes->eps();
+  return hole_forces_json(c, *f.mesh, s, f.stokes->last_solution_chi() / f.stokes->eps());
+}
+
+Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa) {
+  Json list = Json::array();
   // [[obstacles]]' holes Sigma_5_i, or [obstacle]'s one disk Sigma_5.
   const std::size_t count = c.obstacles_given ? c.obstacles.size() : 1;
   for (std::size_t i = 0; i < count; ++i) {
-    const int label = f.mesh->label(c.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
-    list.push_back({{"force", s ? point_json(hole_force(*f.mesh, c.fluid->mu, c.fluid->f, *s, label, kappa))
-                                : Json(nullptr)}});
+    if (!s) {
+      list.push_back({{"force", nullptr}});
+      continue;
+    }
+    const int label = mesh.label(c.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
+    list.push_back({{"force", point_json(hole_force(mesh, c.fluid->mu, c.fluid->f, *s, label, kappa))}});
   }
   return list;
 }

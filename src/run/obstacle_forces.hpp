@@ -20,6 +20,11 @@ namespace fsi {
 // completion failed) is null.
 Json obstacle_forces_json(const Case& c, FluidSetup& f);
 
+// The same list from a solution `s` on `mesh` (null: forces null, mesh unused) computed with the
+// penalty `kappa` = χ/ε per triangle (empty for the body-fitted fluid, which has no
+// penalty); the holes labelled Sigma_5_i, or Sigma_5 for [obstacle].
+Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa);
+
 // The fluid's force on the hole labelled `label` of a solution computed with the
 // penalty `kappa` = χ/ε per triangle.
 Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,

@@ -2,8 +2,9 @@
 // fluid on a mesh of D \ φ(Ω_S0) made for each fixed-point pass, no penalty
 // (coupling/body_fitted_fluid.hpp). summary.json carries the keys of the penalised
 // run that mean the same here (max_displacement, tip_displacement, structure_force,
-// contact, kkt, timing_s, ...), fluid.method and the meshing time of each pass; no
-// ‖v‖ in the structure (v = 0 on Γ_u by construction) and no ε.
+// contact, kkt, timing_s, obstacles[i].force with [[obstacles]], ...), fluid.method and
+// the meshing time of each pass; no ‖v‖ in the structure (v = 0 on Γ_u by
+// construction) and no ε.
 #include <cmath>
 #include <cstdio>
 
@@ -17,6 +18,7 @@
 #include "run/coupling_outputs.hpp"
 #include "run/fluid_outputs.hpp"
 #include "run/fluid_setup.hpp"
+#include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
 #include "run/probes.hpp"
 #include "run/run_case.hpp"
@@ -32,6 +34,7 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
   const ObstacleParams& o = c.obstacle;
   BodyFittedFluidParams p;
   p.box = {f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
+  p.box.holes = case_holes(c);  // [[obstacles]]: each a hole Sigma_5_i (SPEC §9)
   p.mu = f.mu;
   const Point f_F = f.f;
   p.f = [f_F](const Point&) { return f_F; };
@@ -143,6 +146,10 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       if (options.progress) options.progress(line);
     };
     if (options.initial_displacement) loop->initial = *options.initial_displacement;
+    if (s.gap->normal()) {  // from rest, as run_fsi's couple: a cached setup's last run aside
+      s.gap->relinearise(*s.solver, Eigen::VectorXd::Zero(2 * s.mesh().num_vertices()));
+      loop->relinearise = [&s](const Eigen::VectorXd& u) { s.gap->relinearise(*s.solver, u); };
+    }
     result = loop->run();
     last = loop->last_fluid();
   }
@@ -176,11 +183,18 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {
     j["contact"] = to_json(*m.contact);
+    if (s.gap->normal())
+      add_gap_summary(j["contact"], c, s, result.structure);  // min_gap (SPEC §9)
     j["kkt"] = to_json(result.structure.qp.kkt);
     j["relaxation"] = {{"scheme", c.coupling.scheme},
                        {"omega0", c.coupling.omega},
                        {"projections", result.projections}};
   }
+  // The fluid's force on each hole by the residual method (SPEC §10), on the last
+  // pass's mesh and solution; κ empty: no penalty.
+  if (c.obstacles_given)
+    j["obstacles"] =
+        hole_forces_json(c, last ? *last->mesh : s.mesh(), last ? &last->solution : nullptr, {});
   j["fluid"] = fluid_json(result, last);
   r.report = report(c, result, m.displacement->max, m.fluid_mesh, fluid_only);
   r.exit_status = exit_status_of(result);

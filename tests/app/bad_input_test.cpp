@@ -208,7 +208,7 @@ std::vector<BadInput> bad_inputs() {
       {"fsi_polygons_too_close", kFsiObstacles + polygon_obstacle("[0.02, -0.03], [0.04, -0.03], [0.03, -0.01]") + polygon_obstacle("[0.0405, -0.03], [0.06, -0.03], [0.05, -0.01]"), "", {"obstacles[2] comes within 0.0005 of obstacles[1]"}},
       {"fsi_polygon_bar_across_the_structure", kFsiObstacles + polygon_obstacle("[0.0301, -0.01], [0.0303, -0.01], [0.0303, 0.01], [0.0301, 0.01]"), "", {"the side (0.0303, -0.01) - (0.0303, 0.01) of obstacles[1] crosses the structure's boundary at rest"}},
       {"fsi_polygon_tip_into_the_structure", kFsiObstacles + polygon_obstacle("[0.0295, -0.01], [0.0305, -0.01], [0.03, 0.001]"), "", {"the corner (0.03, 0.001) of obstacles[1] lies inside the structure at rest"}},
-      {"fsi_obstacles_body_fitted", kFsiObstacles + kDisk, "--set fluid.method=body-fitted", {"fluid.method = \"body-fitted\"", "[[obstacles]]", "\"penalised\""}},
+      {"fsi_half_plane_body_fitted", kFsiObstacles + kDisk + "[[obstacles]]\nshape = \"half-plane\"\npoint = [0, -0.01]\nnormal = [0, 1]\n", "--set fluid.method=body-fitted", {"obstacles[2].shape = \"half-plane\"", "contact problems only"}},
       {"eps_rule_unknown", kValid + "[fluid]\nh = 0.004\n", "--set coupling.eps_rule=h^9", {"coupling.eps_rule", "h^p"}},
       {"method_unknown", kValid + "[fluid]\nh = 0.004\n", "--set fluid.method=immersed", {"fluid.method", "body-fitted"}},
       // The box sides (SPEC §10).

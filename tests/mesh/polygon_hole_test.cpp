@@ -2,7 +2,8 @@
 // the polygons (and disks) exactly, each hole's edges lie on its polygon's sides, its
 // corners are mesh vertices, every side is cut into at least two edges (also a side
 // shorter than fluid.h, and with the band refinement, whose size field ignores the
-// corners' sizes), and the labels Sigma_5_i follow the holes' order.
+// corners' sizes), and the labels Sigma_5_i follow the holes' order; the same for the
+// body-fitted mesh of D minus a structure (fluid.method = "body-fitted").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,7 +74,8 @@ void expect_polygon_hole(const Mesh& m, const std::vector<Point>& corners, int l
   }
 }
 
-void expect_the_holes(const Mesh& m) {
+// `structure_area`: what else D lacks (the body-fitted mesh's structure).
+void expect_the_holes(const Mesh& m, double structure_area = 0) {
   const std::vector<FluidHole> h = holes();
   ASSERT_EQ(hole_labels(m).size(), 3u);
   expect_polygon_hole(m, h[0].corners, m.label("Sigma_5_1"));
@@ -81,7 +83,7 @@ void expect_the_holes(const Mesh& m) {
   const Point centre(h[1].x0, h[1].y0);
   for (int v : m.vertices_on(m.label("Sigma_5_2"))) EXPECT_NEAR((m.vertices[v] - centre).norm(), h[1].r, 1e-14);
   // |D| = box − the polygons − the disk's inscribed polygon: the triangles fill exactly that.
-  const double expected = 1.5 * 1.0 - std::abs(signed_area(h[0].corners)) - std::abs(signed_area(h[2].corners)) -
+  const double expected = 1.5 * 1.0 - structure_area - std::abs(signed_area(h[0].corners)) - std::abs(signed_area(h[2].corners)) -
                           inscribed_area(m, m.label("Sigma_5_2"), centre);
   EXPECT_NEAR(mesh_area(m), expected, 1e-13 * expected);
   for (int t = 0; t < m.num_triangles(); ++t) ASSERT_GT(m.area(t), 0);
@@ -97,6 +99,19 @@ TEST(PolygonHoles, TheBoxMinusThePolygonsExactly) {
 
 TEST(PolygonHoles, TheBandRefinementKeepsEverySideCut) {
   expect_the_holes(generate_fluid_mesh(box(0.005)));
+}
+
+TEST(PolygonHoles, TheBodyFittedMeshHasTheSameHoles) {
+  // A 0.5 x 0.05 beam on the left wall above the holes, its outline in pieces of h.
+  const std::vector<Point> corners = {{0, 0.3}, {0.5, 0.3}, {0.5, 0.35}, {0, 0.35}};
+  std::vector<Point> outline = {corners[0]};
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+    const int n = static_cast<int>(std::ceil((corners[k + 1] - corners[k]).norm() / kH));
+    for (int i = 1; i <= n; ++i) outline.push_back(corners[k] + (corners[k + 1] - corners[k]) * (double(i) / n));
+  }
+  const Mesh m = generate_fluid_mesh_around({box(), outline});
+  expect_the_holes(m, 0.5 * 0.05);
+  EXPECT_EQ(m.vertices_on(m.label("Gamma_u")).size(), outline.size());
 }
 
 }  // namespace
