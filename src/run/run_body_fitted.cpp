@@ -143,6 +143,8 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       if (options.progress) options.progress(line);
     };
     if (options.initial_displacement) loop->initial = *options.initial_displacement;
+    const ProbeSet probes(s.mesh(), c.output.probes);
+    loop->observe = probes.observer();  // history.csv's u_x_i, u_y_i
     result = loop->run();
     last = loop->last_fluid();
   }
@@ -171,6 +173,7 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
   j["mesh"] = {{"structure", to_json(m.structure_mesh)}, {"fluid", to_json(m.fluid_mesh)}};
   add_measures(j, m);
   j["tip_displacement"] = tip_displacement_json(c, s.mesh(), u);
+  add_displacement_at(j, c, s.mesh(), u);
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] =
       point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
