@@ -74,6 +74,7 @@ CouplingResult BodyFittedCoupling::run() {
   BodyFittedMap H(p_, last_fluid_, relinearise);
   FixedPointLoop loop(H, p_.relaxation, M_, tol_, max_iterations_);
   loop.progress = progress;
+  loop.observe = observe;
   return loop.run(initial);
 }
 

@@ -28,6 +28,7 @@ class BodyFittedCoupling {
   BodyFittedCoupling(Parts parts, double tol, int max_iterations);
 
   std::function<void(const std::string&)> progress;  // one line per pass
+  PassObserver observe;                              // optional: FixedPointLoop::observe
   // u⁰ instead of the structure at rest, as FixedPointCoupling::initial.
   Eigen::VectorXd initial;
   // contact.gap = "normal" (SPEC §9): the constraint moved to the pass's u before its

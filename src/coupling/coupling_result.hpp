@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -25,7 +26,13 @@ struct IterationRecord {
   int fluid_triangles = 0;
   bool remeshed = false;  // a new Gmsh mesh (else the last one moved with the structure)
   double t_mesh = 0;
+  // What the run's PassObserver read off this pass's ũ (run/: ũ at output.probes).
+  std::vector<Point> probes;
 };
+
+// Called by the loop with each pass's ũ^{k+1} and its record, before the record is
+// kept: the run measures ũ there without the loop knowing what it measures.
+using PassObserver = std::function<void(const Eigen::VectorXd& u_tilde, IterationRecord& rec)>;
 
 struct CouplingResult {
   bool converged = false;

@@ -50,6 +50,7 @@ CouplingResult FixedPointCoupling::run() {
   H.relinearise = relinearise;
   FixedPointLoop loop(H, relaxation_, M_, tol_, max_iterations_);
   loop.progress = progress;
+  loop.observe = observe;
   return loop.run(initial);
 }
 

@@ -23,6 +23,7 @@ class FixedPointCoupling {
 
   // One line per iteration (for stderr).
   std::function<void(const std::string&)> progress;
+  PassObserver observe;  // optional: FixedPointLoop::observe
   // Called with u^k before each pass's QP: contact.gap = "normal" re-linearises the
   // constraint about the current state there, once per pass (SPEC §9). Empty: the
   // constraint stays as built (the paper's eq. 15).

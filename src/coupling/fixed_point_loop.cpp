@@ -43,6 +43,7 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
       throw SolverFailure("the stopping test failed at fixed-point iteration " + std::to_string(k) +
                           ": the increment is not a finite number");
     rec.active_nodes = result.structure.qp.active_count();
+    if (observe) observe(result.structure.u, rec);
     result.final_increment = rec.increment;
     result.final_norm = std::sqrt(result.structure.u.dot(M_ * result.structure.u));
     const bool converged = rec.increment < tol_;

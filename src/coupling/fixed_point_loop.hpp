@@ -24,6 +24,7 @@ class FixedPointLoop {
   FixedPointLoop& operator=(const FixedPointLoop&) = delete;
 
   std::function<void(const std::string&)> progress;  // one line per pass
+  PassObserver observe;                              // optional, each pass's ũ
 
   // From u0 (empty: the structure at rest; else projected onto the feasible set). Never
   // throws for a failed solve: it stops, keeps the last good state and says why in

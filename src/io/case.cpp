@@ -213,6 +213,7 @@ void read_output(const toml::table& root, const Origin& origin, Case& c, std::ve
   c.output.dir_origin = origin.of("output.dir");
   c.output.png = s.boolean("png", c.output.png);
   c.output.vtu = s.boolean("vtu", c.output.vtu);
+  c.output.probes = read_probes(s, origin);
   const std::string problem = output_path_problem(c.output.dir);
   if (!problem.empty()) fail(origin, "output.dir", problem, "a directory path");
   s.reject_unknown();
@@ -269,6 +270,13 @@ Case read_with_overrides(toml::table& root, Origin& origin, const std::string& c
   Case c = read_case(root, origin, case_path, has_fluid_default);
   if (!out_dir.empty()) c.output.dir_origin = "--out";
   return c;
+}
+
+// [[x, y], ...] (a polygon's corners, output.probes), each number as it was read.
+toml::array points_toml(const std::vector<Point>& points) {
+  toml::array a;
+  for (const Point& p : points) a.push_back(toml::array{p.x(), p.y()});
+  return a;
 }
 
 InputError parse_error(const std::string& where, const toml::parse_error& e) {
@@ -339,9 +347,7 @@ std::string to_toml(const Case& c) {
       if (b.shape == "half-plane")
         e.insert("point", toml::array{b.point.x(), b.point.y()}), e.insert("normal", toml::array{b.normal.x(), b.normal.y()});
       if (b.shape == "polygon") {
-        toml::array points;
-        for (const Point& p : b.points) points.push_back(toml::array{p.x(), p.y()});
-        e.insert("points", points);
+        e.insert("points", points_toml(b.points));
       }
       list.push_back(e);
     }
@@ -363,7 +369,9 @@ std::string to_toml(const Case& c) {
                                    {"max_iterations", k.max_iterations}, {"scheme", k.scheme},
                                    {"eps_rule", k.eps_rule}});
   t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
-  t.insert("output", toml::table{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}});
+  toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};
+  if (!c.output.probes.empty()) output.insert("probes", points_toml(c.output.probes));
+  t.insert("output", output);
   std::ostringstream out;
   out << t << "\n";
   return out.str();

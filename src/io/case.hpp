@@ -109,6 +109,9 @@ struct OutputParams {
   std::string dir_origin;  // where dir came from (the file, --set, --out), for messages
   bool png = true;
   bool vtu = true;
+  // output.probes (SPEC §11): material points, in reference coordinates, where
+  // summary.json (displacement_at) and history.csv report the displacement.
+  std::vector<Point> probes;
 };
 
 struct Case {

@@ -301,6 +301,9 @@ void check_no_structure(const Case& c, const Origin& o) {
   if (c.fluid->h_near > 0 && !c.fluid->band_box)
     fail(o, "fluid.band", "= " + shortest(c.fluid->band) + " is a width around the structure; structure.shape = \"none\" has none",
          "fluid.band = [x_min, y_min, x_max, y_max] with fluid.h_near, or fluid.h_near = 0");
+  if (!c.output.probes.empty())  // a probe is a material point of the structure (SPEC §11)
+    fail(o, "output.probes", "names points of the structure; structure.shape = \"none\" has none",
+         "no output.probes with structure.shape = \"none\"");
 }
 
 void check_case(const Case& c, const Origin& origin) {

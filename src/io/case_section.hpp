@@ -143,5 +143,7 @@ inline const toml::table* section_table(const toml::table& root, const std::stri
   return n->as_table();
 }
 
+// output.probes of the [output] section (case_probes.cpp).
+std::vector<Point> read_probes(Section& output, const Origin& origin);
 
 }  // namespace fsi::case_detail

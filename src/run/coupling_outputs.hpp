@@ -12,7 +12,8 @@
 namespace fsi {
 
 // One line per pass. `body_fitted` adds the pass's fluid mesh (fluid_triangles,
-// remeshed, t_mesh_s): the body-fitted method remeshes D \ φ(Ω_S0) every pass.
+// remeshed, t_mesh_s): the body-fitted method remeshes D \ φ(Ω_S0) every pass. Then
+// u_x_i,u_y_i: ũ at each output.probes point, the records' `probes`.
 void write_history(const std::string& path, const std::vector<IterationRecord>& history,
                    bool body_fitted);
 

@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "fem/point_locator.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/contact_gap.hpp"
 #include "run/hole_checks.hpp"
@@ -244,6 +245,23 @@ void check_file_structure(const Case& c, const Mesh& mesh, const std::string& wh
                      "\"Gamma_C\"; allowed: a physical curve Gamma_C, or contact.boundary = \"all\" (with contact.gap = \"normal\")");
 }
 
+// output.probes (SPEC §11) are material points: each in Ω_S0, up to 1e-9 of its
+// diameter (a point on the boundary written with a rounded last digit passes).
+void check_probes_inside(const Case& c, const Mesh& mesh, const std::string& what) {
+  if (c.output.probes.empty()) return;
+  const Box b = bounding_box(mesh);
+  const double tol = 1e-9 * (b.hi - b.lo).norm();
+  const PointLocator locator(mesh);
+  for (std::size_t i = 0; i < c.output.probes.size(); ++i) {
+    const Point& X = c.output.probes[i];
+    const double distance = locator.locate(X) ? 0.0 : (locator.nearest_boundary_point(X) - X).norm();
+    if (distance > tol)
+      throw InputError(c.source + ": output.probes[" + std::to_string(i + 1) + "] = " + at(X) + " is " +
+                       approx(distance) + " m outside the structure (" + what +
+                       "); allowed: points of the reference configuration, within " + approx(tol) + " m of it");
+  }
+}
+
 void check_structure_mesh(const Case& c, const Mesh& mesh) {
   const auto& s = c.structure;
   const std::string what = s.rectangle() ? "the generated structure mesh" : "structure." + s.shape + " " + s.file();
@@ -257,6 +275,7 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
   check_outside_disk(c, mesh, what);
   if (c.fluid) check_inside_box(c, mesh, what);
   check_clamp_off_inflow(c, mesh, what);
+  check_probes_inside(c, mesh, what);
 }
 
 void check_fluid_mesh(const Case& c, const Mesh& mesh) {

@@ -25,7 +25,7 @@ Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& pa
 // (else A_S is singular), no vertex inside the disk, every boundary edge labelled,
 // inside the fluid box (FSI), Γ_D off an inflow on Σ1; a file's (mesh or script) extent
 // must equal structure.L × structure.H from (0, 0) if either is given, and its loads
-// strain it little.
+// strain it little; every output.probes point lies in it.
 void check_structure_mesh(const Case& c, const Mesh& mesh);
 
 // A fluid mesh file: its box equals (0, L1) × (−H2, H1), Σ1…Σ4 are the left,

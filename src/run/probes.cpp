@@ -4,9 +4,10 @@
 
 namespace fsi {
 
-Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X) {
-  const PointLocator locator(reference);
-  const Location at = locator.locate_or_nearest(X);
+namespace {
+
+// The P1 interpolant of u at a located point.
+Point interpolate(const Mesh& reference, const Eigen::VectorXd& u, const Location& at) {
   const int nv = reference.num_vertices();
   Point d(0, 0);
   for (int a = 0; a < 3; ++a) {
@@ -14,6 +15,29 @@ Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Poi
     d += at.lambda[a] * Point(u[v], u[nv + v]);
   }
   return d;
+}
+
+}  // namespace
+
+Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X) {
+  return interpolate(reference, u, PointLocator(reference).locate_or_nearest(X));
+}
+
+ProbeSet::ProbeSet(const Mesh& reference, const std::vector<Point>& points) : reference_(reference) {
+  if (points.empty()) return;
+  const PointLocator locator(reference);
+  for (const Point& X : points) at_.push_back(locator.locate_or_nearest(X));
+}
+
+std::vector<Point> ProbeSet::displacements(const Eigen::VectorXd& u) const {
+  std::vector<Point> d;
+  for (const Location& at : at_) d.push_back(interpolate(reference_, u, at));
+  return d;
+}
+
+PassObserver ProbeSet::observer() const {
+  if (at_.empty()) return nullptr;
+  return [this](const Eigen::VectorXd& u_tilde, IterationRecord& rec) { rec.probes = displacements(u_tilde); };
 }
 
 Point resultant(const Eigen::VectorXd& load) {

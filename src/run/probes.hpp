@@ -3,7 +3,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
+#include "coupling/coupling_result.hpp"
+#include "fem/point_locator.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fsi {
@@ -11,6 +14,21 @@ namespace fsi {
 // u (2nv, paper ordering) interpolated at the reference point X (the nearest point of
 // the mesh if X is outside it).
 Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X);
+
+// output.probes (SPEC §11): the same at fixed points, read many times (each
+// fixed-point pass, history.csv), the points located once.
+class ProbeSet {
+ public:
+  ProbeSet(const Mesh& reference, const std::vector<Point>& points);
+  // u at each point, in the points' order.
+  std::vector<Point> displacements(const Eigen::VectorXd& u) const;
+  // Fills each pass's record with ũ at the points (none if there are no points).
+  PassObserver observer() const;
+
+ private:
+  const Mesh& reference_;
+  std::vector<Location> at_;
+};
 
 // [Σ F_x, Σ F_y] of a nodal load vector (2nv): tested with w = e_x, e_y, the force
 // the load's integrals carry (eq. 33's fluid terms: the fluid's force on the structure).

@@ -150,6 +150,8 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
       s.gap->relinearise(*s.solver, Eigen::VectorXd::Zero(2 * s.mesh().num_vertices()));
       loop->relinearise = [&s](const Eigen::VectorXd& u) { s.gap->relinearise(*s.solver, u); };
     }
+    const ProbeSet probes(s.mesh(), c.output.probes);
+    loop->observe = probes.observer();  // history.csv's u_x_i, u_y_i
     result = loop->run();
     last = loop->last_fluid();
   }
@@ -178,6 +180,7 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
   j["mesh"] = {{"structure", to_json(m.structure_mesh)}, {"fluid", to_json(m.fluid_mesh)}};
   add_measures(j, m);
   j["tip_displacement"] = tip_displacement_json(c, s.mesh(), u);
+  add_displacement_at(j, c, s.mesh(), u);
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] =
       point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));

@@ -68,6 +68,8 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force}, *relaxation,
                           c.coupling.tol, c.coupling.max_iterations);
   loop.progress = progress;
+  const ProbeSet probes(ref, c.output.probes);
+  loop.observe = probes.observer();  // history.csv's u_x_i, u_y_i
   if (initial) loop.initial = *initial;
   const ContactGap& gap = *s.gap;
   if (gap.normal()) {
@@ -208,6 +210,7 @@ Json fsi_summary(const Case& c, FsiSetup& su, const CouplingResult& result, cons
   add_measures(j, m);
   const StructureSetup& s = su.s;
   j["tip_displacement"] = tip_displacement_json(c, s.mesh(), result.structure.u);
+  add_displacement_at(j, c, s.mesh(), result.structure.u);
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {

@@ -38,7 +38,14 @@ Json to_json(const CouplingParams& k) {
 
 Json to_json(const ContactParams& c) { return {{"solver", c.solver}, {"gap", c.gap}, {"boundary", c.boundary}}; }
 
-Json to_json(const OutputParams& o) { return {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}}; }
+Json to_json(const OutputParams& o) {
+  Json j = {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}};
+  if (!o.probes.empty()) {  // absent without probes: the parameters of earlier runs unchanged
+    j["probes"] = Json::array();
+    for (const Point& p : o.probes) j["probes"].push_back(point_json(p));
+  }
+  return j;
+}
 
 Json to_json(const Case& c) {
   Json j;
@@ -109,6 +116,14 @@ std::optional<Point> tip_of(const Case& c) {
 Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u) {
   const std::optional<Point> tip = tip_of(c);
   return tip ? point_json(displacement_at(reference, u, *tip)) : Json(nullptr);
+}
+
+void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u) {
+  if (c.output.probes.empty()) return;
+  const std::vector<Point> d = ProbeSet(reference, c.output.probes).displacements(u);
+  Json list = Json::array();
+  for (std::size_t i = 0; i < d.size(); ++i) list.push_back({{"point", point_json(c.output.probes[i])}, {"u", point_json(d[i])}});
+  j["displacement_at"] = list;
 }
 
 double max_displacement(const Eigen::VectorXd& u) {

@@ -43,6 +43,10 @@ std::optional<Point> tip_of(const Case& c);
 // u at the tip, [x, y], or null without one.
 Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u);
 
+// summary.json's displacement_at (SPEC §11): [{"point": [x, y], "u": [ux, uy]}, ...], u
+// at each of output.probes in its order (P1 interpolation); no key without probes.
+void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u);
+
 // max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
 double max_displacement(const Eigen::VectorXd& u);
 

@@ -100,6 +100,13 @@ std::string polygon_obstacle(const std::string& corners) {
   return "[[obstacles]]\nshape = \"polygon\"\npoints = [" + corners + "]\n";
 }
 
+// n points of the kValid beam, "[x, y], [x, y], ...".
+std::string many_probes(int n) {
+  std::string list;
+  for (int i = 0; i < n; ++i) list += (i ? ", " : "") + std::string("[0.01, 0.002]");
+  return list;
+}
+
 void PrintTo(const BadInput& b, std::ostream* os) { *os << b.label; }
 
 std::vector<BadInput> bad_inputs() {
@@ -269,6 +276,13 @@ std::vector<BadInput> bad_inputs() {
       {"geo_extent_contradicts_L", kGeo, "--set structure.L=0.2", {"structure.L = 0.2 contradicts structure.geo", "x = 0.1"}, {{"s.geo", kBar}}},
       {"geo_starts_inside_the_floor", replace(kGeo, "point = [0.0, -0.001]", "point = [0.0, 0.01]"), "", {"structure.geo s.geo", "inside an obstacle"}, {{"s.geo", kBar}}},
       {"geo_too_soft", kGeo, "--set structure.E=1e-20", {"structure.geo", "strain", "<= 1e+06"}, {{"s.geo", kBar}}},
+      // output.probes (SPEC §11, issue 14): the form, then points of the structure only.
+      {"probes_not_an_array", kValid, "--set output.probes=3", {"--set output.probes: output.probes must be an array", "[[x, y], ...]"}},
+      {"probe_of_three_numbers", kValid, "--set 'output.probes=[[0.01, 0.002], [0.02, 0.002], [1, 2, 3]]'", {"--set output.probes: output.probes[3]", "not [x, y]", "at most 1000"}},
+      {"probe_nan", kValid, "--set 'output.probes=[[nan, 0.002]]'", {"output.probes[1]", "finite"}},
+      {"probes_too_many", kValid, "--set 'output.probes=[" + many_probes(1001) + "]'", {"output.probes", "has 1001 points", "at most 1000"}},
+      {"probe_outside_the_structure", kValid, "--set 'output.probes=[[0.01, 0.002], [0.07, 0.002]]'", {"output.probes[2] = (0.07, 0.002)", "0.01 m outside the structure", "within 6.02e-11 m"}},
+      {"probes_without_a_structure", kValid + "[fluid]\nh = 0.004\n", "--set structure.shape=none --set 'output.probes=[[0.01, 0.002]]'", {"output.probes", "structure.shape = \"none\" has none"}},
       {"structure_mesh_longer_than_L", replace(replace(kValid, "h = 0.0014", "mesh = \"beam.msh\""), "L = 0.06", "L = 0.07"), "", {"structure.L = 0.07 contradicts structure.mesh", "0.06"}, {{"beam.msh", shipped("paper-7.1-beam.msh")}}},
   };
 }

@@ -182,5 +182,23 @@ TEST(Case, EveryShippedCaseRoundTripsThroughItsResolvedToml) {
   EXPECT_EQ(tilted.obstacles[0].normal.x(), -0.2);  // as given
 }
 
+// output.probes (SPEC §11): none by default, kept in order as given, and written back
+// so that the resolved case.toml reruns with the same probes.
+TEST(Case, ProbesRoundTripInTheirOrder) {
+  EXPECT_TRUE(load_case("").output.probes.empty());
+  EXPECT_EQ(to_toml(load_case("")).find("probes"), std::string::npos);  // none: the key is not written
+  const Case c = load_case_text("[output]\nprobes = [[0.3, 0.015], [0.1, 1e-3], [0, 0]]\n", "p.toml");
+  ASSERT_EQ(c.output.probes.size(), 3u);
+  EXPECT_EQ(c.output.probes[0], Point(0.3, 0.015));
+  EXPECT_EQ(c.output.probes[1], Point(0.1, 1e-3));
+  EXPECT_EQ(c.output.probes[2], Point(0, 0));
+  const std::string resolved = to_toml(c);
+  const Case again = load_case_text(resolved, "resolved.toml");
+  EXPECT_EQ(again.output.probes, c.output.probes);
+  EXPECT_EQ(to_toml(again), resolved);
+  const Case empty = load_case_text("[output]\nprobes = []\n", "p.toml");
+  EXPECT_TRUE(empty.output.probes.empty());
+}
+
 }  // namespace
 }  // namespace fsi
