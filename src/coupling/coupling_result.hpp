@@ -27,7 +27,7 @@ struct IterationRecord {
   bool remeshed = false;  // a new Gmsh mesh (else the last one moved with the structure)
   double t_mesh = 0;
   // What the run's PassObserver read off this pass's ũ (run/: ũ at output.probes).
-  std::vector<Point> probes;
+  std::vector<Point> probes = {};
 };
 
 // Called by the loop with each pass's ũ^{k+1} and its record, before the record is

@@ -1,5 +1,7 @@
 #include "coupling/force_transfer.hpp"
 
+#include "solid/hyperelastic.hpp"
+
 #include "fem/integration.hpp"
 
 namespace fsi {
@@ -37,22 +39,24 @@ SampledFluid sample_at(const FluidField& field, const std::vector<Location>& whe
   return s;
 }
 
-FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F)
+FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F, ForceModel model)
     : mesh_(reference),
+      mu_F_(mu_F),
       eps_(eps),
+      model_(model),
       f_F_(f_F),
       K_mu_(assemble_elasticity(reference, Lame{0.0, mu_F})),  // λ = 0, μ = μ_F: 2μ_F ε:ε
       B_(assemble_divergence(reference)),
       M_(assemble_vector_mass(reference)) {}
 
-Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u) const {
+Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) const {
   const int nv = mesh_.num_vertices();
   Eigen::VectorXd body = Eigen::VectorXd::Zero(2 * nv);
   integrate_on_triangles(mesh_, triangle_rule(2), [&](int tri, const P1Triangle&, const TrianglePoint& q) {
     const auto& v = mesh_.triangles[tri];
     Point x = q.x;  // the point's deformed position
     for (int a = 0; a < 3; ++a) x += q.lambda[a] * Point(u[v[a]], u[nv + v[a]]);
-    const Point f = f_F_(x) * q.dx;
+    const Point f = f_F_(x) * q.dx * (jacobian ? deformation_gradient(mesh_, tri, u).determinant() : 1.0);
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 2; ++c) body[dof(v[a], c, nv)] -= f[c] * q.lambda[a];
   });
@@ -61,6 +65,7 @@ Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u) const {
 
 // Viscous, pressure, penalty and body-force terms of eq. (33).
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
+  if (model_ == ForceModel::large) return large(s, u);
   return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + body_force(u);
 }
 

@@ -30,20 +30,30 @@ std::vector<Location> locate_deformed_vertices(const PointLocator& fluid, const 
 std::vector<int> triangles_of(const std::vector<Location>& where);
 SampledFluid sample_at(const FluidField& field, const std::vector<Location>& where);
 
+// coupling.force (SPEC §11): "small" is eq. (33) above; "large" the exact pull-back
+// of §5 before eq. (32),
+//     F(w) = ∫ J (σ_F∘φ) F⁻ᵀ : ∇_X w + (1/ε) ∫ J ṽ·w − ∫ J (f_F∘φ)·w,
+// σ_F = −p̃ I + 2μ_F sym(∇_X ṽ F⁻¹), F = I + ∇_X u, J = det F (large_force.cpp).
+enum class ForceModel { small, large };
+
 class FluidForce {
  public:
-  FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F);
+  FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F,
+             ForceModel model = ForceModel::small);
 
   // The load vector of eq. (33)'s last four terms, for the sampled fields and the
   // displacement u defining φ.
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
  private:
-  // −∫ (f_F∘φ)·w, φ(X) = X + u(X) interpolated at the quadrature points.
-  Eigen::VectorXd body_force(const Eigen::VectorXd& u) const;
+  // −∫ (f_F∘φ)·w (times J if `jacobian`), φ(X) = X + u(X) at the quadrature points.
+  Eigen::VectorXd body_force(const Eigen::VectorXd& u, bool jacobian = false) const;
+  Eigen::VectorXd large(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
   const Mesh& mesh_;
+  double mu_F_;
   double eps_;
+  ForceModel model_;
   VectorField f_F_;
   SparseMatrix K_mu_;  // ∫ 2μ_F ε(φ_j):ε(φ_i)
   SparseMatrix B_;     // ∫ (div φ_i) q_k

@@ -204,6 +204,7 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   if (!eps_rule_power(p.eps_rule))
     fail(origin, "coupling.eps_rule", "= \"" + p.eps_rule + "\" is not a known rule",
          "\"fixed\", or \"h^p\" with 0 < p <= 4 (for example \"h^2\")");
+  p.force = s.choice("force", p.force, {"small", "large"});
   s.reject_unknown();
 }
 
@@ -365,9 +366,10 @@ std::string to_toml(const Case& c) {
     t.insert("fluid", ft);
   }
   const auto& k = c.coupling;
-  t.insert("coupling", toml::table{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol},
-                                   {"max_iterations", k.max_iterations}, {"scheme", k.scheme},
-                                   {"eps_rule", k.eps_rule}});
+  toml::table coupling{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
+                      {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};
+  if (k.force != "small") coupling.insert("force", k.force);  // the default stays unwritten
+  t.insert("coupling", coupling);
   t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
   toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};
   if (!c.output.probes.empty()) output.insert("probes", points_toml(c.output.probes));

@@ -93,6 +93,8 @@ struct CouplingParams {
   // case's ε on every level) or "h^p" (ε · (h/h₀)^p, h the fluid size at the
   // structure, h₀ the case's own). A single run uses ε as given either way.
   std::string eps_rule = "fixed";
+  // SPEC §11: "small" (eq. 33) | "large" (the exact pull-back with J and F⁻ᵀ).
+  std::string force = "small";
   double eps_power() const;  // p of "h^p"; 0 for "fixed"
 };
 

@@ -229,6 +229,10 @@ void check_fluid_method(const Case& c, const Origin& o) {
   if (f.h_near > 0)
     fail(o, "fluid.method", "= \"body-fitted\" does not refine a band (fluid.h_near = " + shortest(f.h_near) + ")",
          "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
+  if (c.coupling.force != "small")
+    fail(o, "coupling.force", "= \"" + c.coupling.force + "\" is the penalised method's pull-back of eq. (33); "
+                              "fluid.method = \"body-fitted\" has its own force on the fitted interface",
+         "\"small\" with fluid.method = \"body-fitted\", or \"large\" with \"penalised\"");
 }
 
 // SPEC §10 "Box sides": at least one side must be an outflow. There is no

@@ -43,7 +43,8 @@ double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const
 // eq. (33)'s fluid terms, with the case's fluid and ε, on the reference mesh.
 FluidForce fluid_force_of(const Case& c, const Mesh& reference) {
   const Point f_F = c.fluid->f;
-  return FluidForce(reference, c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; });
+  return FluidForce(reference, c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; },
+                    c.coupling.force == "large" ? ForceModel::large : ForceModel::small);
 }
 
 // The fluid alone around the structure at rest: one solve, and its force on the

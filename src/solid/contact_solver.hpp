@@ -21,7 +21,8 @@ struct NewtonReport {
   int steps = 0;        // Newton steps (each one QP), over all load steps
   int load_steps = 0;   // 1: the whole load at once; more if Newton alone failed
   int cuts = 0;         // step halvings of the line search
-  double residual = 0;  // ‖f_int(u) − b − Cᵀα‖ / its scale at the end
+  // The backward error ‖f_int(u) − b − Cᵀα‖∞ / (‖K_T‖∞‖u‖∞ + ‖b‖∞ + ‖Cᵀα‖∞) at the end
+  double residual = 0;
   std::vector<double> history;  // that residual after each step (of the last load step)
 };
 
@@ -77,7 +78,8 @@ class ElasticContactSolver {
  private:
   ContactSolution solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm);
   bool newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report);
-  double equilibrium_residual(const Eigen::VectorXd& f, const Eigen::VectorXd& b, const Eigen::VectorXd& alpha) const;
+  double equilibrium_residual(const Eigen::VectorXd& f, const Eigen::VectorXd& b, const Eigen::VectorXd& alpha,
+                              const Eigen::VectorXd& x, double K_norm) const;
 
   Mesh mesh_;
   int gamma_c_label_;

@@ -1,0 +1,42 @@
+// Turek & Hron's CSM1 (SPEC §11, cases/turek-hron-csm1.toml): the Saint-Venant–Kirchhoff
+// flag under gravity, through `fsicontact run`. Its tip A = (0.6, 0.2) against the
+// benchmark's reference u(A) = (−7.187, −66.10) mm: P1 within 1 % at h = 1 mm, the error
+// falling at the P1 rate (2 for displacements) as h halves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "support/cli.hpp"
+
+namespace fsi {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(TurekHron, Csm1TipWithinOnePercentAndConvergingAtTheP1Rate) {
+  const fs::path dir = testing::scratch_dir("turek-hron-csm1");
+  const std::string csm1 = "'" + std::string(FSICONTACT_SOURCE_DIR) + "/cases/turek-hron-csm1.toml'";
+  const double ref_x = -7.187e-3, ref_y = -66.10e-3;
+  std::vector<double> error_y;
+  for (const char* h : {"0.004", "0.002", "0.001"}) {
+    const testing::CliRun r =
+        testing::run_cli("run " + csm1 + " --set structure.h=" + std::string(h) + " --out r" + h + " -q", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(testing::slurp(dir / ("r" + std::string(h)) / "summary.json"));
+    const double ux = j["displacement_at"][0]["u"][0].get<double>(), uy = j["displacement_at"][0]["u"][1].get<double>();
+    EXPECT_EQ(j["parameters"]["structure"]["model"], "saint-venant-kirchhoff");
+    EXPECT_LE(j["newton"]["residual"].get<double>(), 1e-10);
+    error_y.push_back(std::abs(uy - ref_y));
+    if (std::string(h) == "0.001") {
+      EXPECT_NEAR(ux, ref_x, 0.01 * std::abs(ref_x));
+      EXPECT_NEAR(uy, ref_y, 0.01 * std::abs(ref_y));
+    }
+  }
+  for (std::size_t k = 0; k + 1 < error_y.size(); ++k)
+    EXPECT_GE(std::log2(error_y[k] / error_y[k + 1]), 1.7) << "refinement " << k;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fsi
