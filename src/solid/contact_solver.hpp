@@ -77,6 +77,7 @@ class ElasticContactSolver {
 
  private:
   ContactSolution solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm);
+  void require_unfolded(const Eigen::VectorXd& u) const;
   bool newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report);
   double equilibrium_residual(const Eigen::VectorXd& f, const Eigen::VectorXd& b, const Eigen::VectorXd& alpha,
                               const Eigen::VectorXd& x, double K_norm) const;

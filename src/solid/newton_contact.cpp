@@ -131,6 +131,19 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
   return false;
 }
 
+// Saint-Venant–Kirchhoff's energy stays finite as J → 0 and beyond: under strong
+// compression Newton can converge to a state with folded triangles, a solution of
+// the equations but not of any body. Said, never returned as an answer.
+void ElasticContactSolver::require_unfolded(const Eigen::VectorXd& u) const {
+  int folded = 0;
+  for (int t = 0; t < mesh_.num_triangles(); ++t)
+    if (!(deformation_gradient(mesh_, t, u).determinant() > 0)) ++folded;
+  if (folded)
+    throw SolverFailure("the structure's equilibrium folds " + std::to_string(folded) +
+                        " triangle(s) (det F <= 0): structure.model = \"saint-venant-kirchhoff\" is not valid "
+                        "under such compression; allowed: \"neo-hookean\" (its energy keeps det F > 0) or smaller loads");
+}
+
 ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm) {
   const ContactSolution start = warm && warm->u.size() == b_S.size() ? *warm : at_rest();
   NewtonReport report;
@@ -142,6 +155,7 @@ ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S
     if (converged) {
       report.load_steps = n;
       state.newton = report;
+      require_unfolded(state.u);
       return state;
     }
   }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "common/errors.hpp"
 #include "qp/active_set_solver.hpp"
 #include "solid/contact_solver.hpp"
 #include "solid/free_dof_assembly.hpp"
@@ -234,6 +235,25 @@ TEST(Hyperelastic, ManufacturedSolutionsConvergeAtTheP1RatesWithQuadraticNewton)
     EXPECT_GE(order, 1.8) << r[last - 2] << " -> " << r[last - 1] << " -> " << r[last];
     EXPECT_LE(finest.residual, 1e-10);
     EXPECT_EQ(finest.load_steps, 1);
+  }
+}
+
+// Saint-Venant–Kirchhoff under a load a thousand times Turek–Hron's (the flag folded
+// onto itself): Newton converges, to a state with folded triangles (det F ≤ 0), which
+// is said as a failure, not returned.
+TEST(Hyperelastic, AFoldedSaintVenantKirchhoffEquilibriumIsAFailure) {
+  const Mesh mesh = testing::structured_rectangle(0.35, 0.02, 44, 3);
+  const Lame lame = Lame::from_young_poisson(1.4e6, 0.4);
+  const FlatFoundation far(-10);
+  ActiveSetSolver qp;
+  ElasticContactSolver svk(mesh, lame, far, mesh.label("bottom"), clamped_dofs(mesh, mesh.label("left")), qp);
+  svk.set_material({MaterialModel::saint_venant_kirchhoff, lame});
+  const Eigen::VectorXd b = assemble_volume_load(mesh, [](const Point&) { return Point(0, -2e6); }, 1);
+  try {
+    svk.solve(b);
+    ADD_FAILURE() << "a folded equilibrium was returned";
+  } catch (const SolverFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("folds"), std::string::npos) << e.what();
   }
 }
 
