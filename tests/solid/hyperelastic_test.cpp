@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "qp/active_set_solver.hpp"
+#include "qp/ipopt_solver.hpp"
 #include "solid/contact_solver.hpp"
 #include "solid/free_dof_assembly.hpp"
 #include "solid/hyperelastic.hpp"
@@ -236,6 +237,28 @@ TEST(Hyperelastic, ManufacturedSolutionsConvergeAtTheP1RatesWithQuadraticNewton)
     EXPECT_LE(finest.residual, 1e-10);
     EXPECT_EQ(finest.load_steps, 1);
   }
+}
+
+// Newton with contact through IPOPT (each step one IPOPT QP) lands where the
+// active-set solver does.
+TEST(Hyperelastic, NewtonWithContactAgreesBetweenTheActiveSetSolverAndIpopt) {
+  const Mesh mesh = testing::structured_rectangle(1.0, 0.1, 40, 4);
+  const FlatFoundation floor(-0.01);
+  const std::vector<int> clamp = clamped_dofs(mesh, mesh.label("left"));
+  const Eigen::VectorXd b = assemble_volume_load(mesh, [](const Point&) { return Point(0, -4e3); }, 1);
+  ActiveSetSolver active_set;
+  IpoptSolver ipopt;
+  Eigen::VectorXd u[2];
+  QpSolver* solvers[2] = {&active_set, &ipopt};
+  for (int k = 0; k < 2; ++k) {
+    ElasticContactSolver s(mesh, kLame, floor, mesh.label("bottom"), clamp, *solvers[k]);
+    s.set_material({MaterialModel::neo_hookean, kLame});
+    const ContactSolution c = s.solve(b);
+    ASSERT_GE(c.qp.active_count(), 1) << solvers[k]->name();
+    EXPECT_LE(c.newton.residual, 1e-10) << solvers[k]->name();
+    u[k] = c.u;
+  }
+  EXPECT_LT((u[0] - u[1]).cwiseAbs().maxCoeff(), 1e-8 * u[0].cwiseAbs().maxCoeff());
 }
 
 // Saint-Venant–Kirchhoff under a load a thousand times Turek–Hron's (the flag folded
