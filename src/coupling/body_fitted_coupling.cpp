@@ -46,6 +46,7 @@ class BodyFittedMap final : public CoupledMap {
                                              "check for configurations without contact (use \"penalised\")");
     value.fluid_load = fluid.load;
     last_ = std::move(fluid);
+    rec.newton_steps = value.structure.newton.steps;
     rec.t_structure = clock.elapsed();
     return value;
   }

@@ -21,6 +21,7 @@ struct IterationRecord {
   int chi_triangles = 0;      // fluid triangles with χ > 0
   bool fluid_reused = false;  // χ unchanged: previous fluid solution reused
   double t_chi = 0, t_fluid = 0, t_transfer = 0, t_structure = 0;
+  int newton_steps = 0;  // a nonlinear structure's Newton steps in this pass (0: linear)
   // fluid.method = "body-fitted" (BodyFittedCoupling): the pass's fluid mesh and the
   // time to make it (0 for the penalised method's fixed mesh).
   int fluid_triangles = 0;

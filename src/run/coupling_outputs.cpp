@@ -29,7 +29,7 @@ void write_history(const std::string& path, const std::vector<IterationRecord>& 
   write_atomically(path, [&](std::ostream& out) {
     out << "iteration,increment_l2,omega,active_nodes,chi_triangles,fluid_reused,t_chi_s,t_fluid_s,"
            "t_transfer_s,t_structure_s"
-        << (body_fitted ? ",fluid_triangles,remeshed,t_mesh_s" : "");
+        << (body_fitted ? ",fluid_triangles,remeshed,t_mesh_s" : "") << ",newton_steps";
     write_probe_header(out, history.empty() ? 0 : history.front().probes.size());
     out << '\n' << std::setprecision(10);
     for (const auto& r : history) {
@@ -38,6 +38,7 @@ void write_history(const std::string& path, const std::vector<IterationRecord>& 
           << r.t_fluid << ',' << r.t_transfer << ',' << r.t_structure;
       if (body_fitted)
         out << ',' << r.fluid_triangles << ',' << (r.remeshed ? 1 : 0) << ',' << r.t_mesh;
+      out << ',' << r.newton_steps;
       write_probes(out, r.probes);
       out << '\n';
     }

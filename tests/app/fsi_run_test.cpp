@@ -3,6 +3,7 @@
 // written when the iteration limit is reached.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -61,6 +62,44 @@ TEST(FsiRun, WritesEveryOutput) {
   }
   EXPECT_NEAR(j["timing_s"]["transfer"].get<double>(), transfer, 1e-6);
   EXPECT_NEAR(j["timing_s"]["chi"].get<double>(), chi, 1e-6);
+  fs::remove_all(dir);
+}
+
+// A coupled run with a hyperelastic beam and the exact force (SPEC §11): each pass's
+// Newton steps in history.csv (at least one each), the last pass's Newton in
+// summary.json at the backward error 1e-10; the same case linear has zeros there.
+TEST(FsiRun, AHyperelasticBeamReportsItsNewtonStepsPerPass) {
+  const fs::path dir = testing::scratch_dir("fsi-hyperelastic");
+  const std::string base = "run -q --set fluid.h=0.02 --set structure.h=0.03 --set output.png=false --set output.vtu=false ";
+  ASSERT_EQ(testing::run_cli(base + "--set structure.model=saint-venant-kirchhoff --set coupling.force=large "
+                                    "--set contact.gap=normal --out svk", dir).status, 0);
+  ASSERT_EQ(testing::run_cli(base + "--out linear", dir).status, 0);
+  auto newton_column = [&](const char* run) {
+    std::istringstream lines(testing::slurp(dir / run / "history.csv"));
+    std::string header, line;
+    std::getline(lines, header);
+    std::vector<std::string> names;
+    std::istringstream h(header);
+    for (std::string cell; std::getline(h, cell, ',');) names.push_back(cell);
+    const auto at = std::find(names.begin(), names.end(), "newton_steps") - names.begin();
+    EXPECT_LT(static_cast<std::size_t>(at), names.size()) << header;
+    std::vector<int> steps;
+    while (std::getline(lines, line)) {
+      std::vector<std::string> cells;
+      std::istringstream row(line);
+      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+      steps.push_back(std::stoi(cells.at(static_cast<std::size_t>(at))));
+    }
+    return steps;
+  };
+  const std::vector<int> svk = newton_column("svk"), linear = newton_column("linear");
+  ASSERT_FALSE(svk.empty());
+  for (int n : svk) EXPECT_GE(n, 1);
+  for (int n : linear) EXPECT_EQ(n, 0);
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "svk/summary.json"));
+  EXPECT_LE(j["newton"]["residual"].get<double>(), 1e-10);
+  EXPECT_EQ(j["parameters"]["coupling"]["force"], "large");
+  EXPECT_FALSE(nlohmann::json::parse(testing::slurp(dir / "linear/summary.json")).contains("newton"));
   fs::remove_all(dir);
 }
 
