@@ -1,0 +1,49 @@
+// The P2 (quadratic Lagrange) space on a triangle mesh, for structure.element = "P2"
+// (SPEC §11, issue 14): nodes at the vertices (indices 0 … nv−1, the mesh's) and at
+// the edge midpoints (nv … nv + ne − 1), six per triangle, and the six basis functions
+// in barycentric coordinates,
+//     N_a = λ_a (2λ_a − 1) (a = 0, 1, 2),   N_{3+k} = 4 λ_k λ_{k+1} (the edge k → k+1),
+// with ∇N_a = (4λ_a − 1) ∇λ_a and ∇N_{3+k} = 4 (λ_{k+1} ∇λ_k + λ_k ∇λ_{k+1}).
+// The edges are straight: a curved boundary (a .geo arc) is met at its vertices only,
+// an O(h³) geometric error, below P2's O(h³) in L².
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "fem/p1.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fsi {
+
+class P2Space {
+ public:
+  explicit P2Space(const Mesh& mesh);  // refers to `mesh`: it must outlive the space
+  explicit P2Space(const Mesh&& mesh) = delete;
+
+  const Mesh& mesh() const { return mesh_; }
+  int num_nodes() const { return static_cast<int>(nodes_.size()); }
+  const std::vector<Point>& nodes() const { return nodes_; }
+  // Triangle t's six nodes: its vertices, then the midpoints of edges 0→1, 1→2, 2→0.
+  const std::array<int, 6>& element(int t) const { return elements_[t]; }
+  // The node at the middle of the boundary edge e (one of mesh.boundary_edges).
+  int midpoint_of(const BoundaryEdge& e) const;
+  // Sorted nodes on the edges labelled `label`: their vertices and midpoints.
+  std::vector<int> nodes_on(int label) const;
+
+ private:
+  const Mesh& mesh_;
+  std::vector<Point> nodes_;
+  std::vector<std::array<int, 6>> elements_;
+  std::vector<std::vector<std::pair<int, int>>> edge_of_vertex_;  // v → (w > v, midpoint node)
+};
+
+// The six P2 basis values and gradients at barycentric point λ of triangle T.
+struct P2Values {
+  std::array<double, 6> N;
+  Eigen::Matrix<double, 6, 2> grad;  // row i: ∇N_i
+};
+P2Values p2_values(const P1Triangle& T, const Eigen::Vector3d& lambda);
+
+}  // namespace fsi
