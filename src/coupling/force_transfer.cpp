@@ -52,11 +52,11 @@ FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const Vec
 Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) const {
   const int nv = mesh_.num_vertices();
   Eigen::VectorXd body = Eigen::VectorXd::Zero(2 * nv);
-  integrate_on_triangles(mesh_, triangle_rule(2), [&](int tri, const P1Triangle&, const TrianglePoint& q) {
+  integrate_on_triangles(mesh_, triangle_rule(2), [&](int tri, const P1Triangle& T, const TrianglePoint& q) {
     const auto& v = mesh_.triangles[tri];
     Point x = q.x;  // the point's deformed position
     for (int a = 0; a < 3; ++a) x += q.lambda[a] * Point(u[v[a]], u[nv + v[a]]);
-    const Point f = f_F_(x) * q.dx * (jacobian ? deformation_gradient(mesh_, tri, u).determinant() : 1.0);
+    const Point f = f_F_(x) * q.dx * (jacobian ? deformation_gradient(T, v, u, nv).determinant() : 1.0);
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 2; ++c) body[dof(v[a], c, nv)] -= f[c] * q.lambda[a];
   });

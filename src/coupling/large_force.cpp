@@ -16,7 +16,7 @@ Eigen::VectorXd FluidForce::large(const SampledFluid& s, const Eigen::VectorXd& 
   Eigen::VectorXd load = body_force(u, /*jacobian=*/true);
   for_each_triangle(mesh_, [&](int t, const P1Triangle& T) {
     const auto& tri = mesh_.triangles[t];
-    const Matrix2 F = deformation_gradient(mesh_, t, u);
+    const Matrix2 F = deformation_gradient(T, tri, u, nv);
     const double J = F.determinant();
     const Matrix2 Finv = F.inverse();
     Matrix2 grad_v = Matrix2::Zero();  // ∇_X ṽ, row c = ∇ṽ_c

@@ -66,7 +66,7 @@ void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
   for (Eigen::Index j0 = 0; j0 < m; j0 += block) {
     const Eigen::Index nb = std::min(block, m - j0);
     const Eigen::MatrixXd rhs = Eigen::MatrixXd(Ct.middleCols(j0, nb));
-    const Eigen::MatrixXd Z = solve_A(rhs);
+    const Eigen::MatrixXd Z = solve_A<Eigen::MatrixXd>(rhs);
     S_.middleCols(j0, nb) = C_ * Z;
   }
   S_ = 0.5 * (S_ + S_.transpose()).eval();  // symmetric to round-off
@@ -135,7 +135,7 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
   require_finite(c, "active-set", "the bound c_lb");
   used_fallback_ = false;
   const Eigen::Index m = C_.rows();
-  const Eigen::VectorXd d = C_ * Eigen::VectorXd(solve_A(b)) - c;  // slack at α = 0
+  const Eigen::VectorXd d = C_ * solve_A<Eigen::VectorXd>(b) - c;  // slack at α = 0
 
   QpResult result;
   result.active.assign(m, false);
@@ -180,7 +180,7 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
     if (progress) progress("active-set: cycling detected, finished by Lawson-Hanson");
   }
   result.alpha = alpha.cwiseMax(0.0);
-  result.x = solve_A(Eigen::VectorXd(b + C_.transpose() * result.alpha));
+  result.x = solve_A<Eigen::VectorXd>(b + C_.transpose() * result.alpha);
   result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, alpha);
   result.status = used_fallback_ ? "converged (Lawson-Hanson fallback)" : "converged";
   if (!(result.kkt.max() <= kkt_tolerance))

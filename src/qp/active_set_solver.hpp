@@ -44,9 +44,10 @@ class ActiveSetSolver final : public QpSolver {
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> cholesky_;
   std::unique_ptr<Eigen::SimplicialLLT<SparseMatrix>> simplicial_;  // refactorise_often
   bool factorised() const { return cholesky_ || simplicial_; }
-  template <class Rhs>
-  Eigen::MatrixXd solve_A(const Rhs& rhs) const {
-    return simplicial_ ? Eigen::MatrixXd(simplicial_->solve(rhs)) : Eigen::MatrixXd(cholesky_->solve(rhs));
+  // A⁻¹ rhs by whichever factorisation is in use.
+  template <class Plain>
+  Plain solve_A(const Plain& rhs) const {
+    return simplicial_ ? Plain(simplicial_->solve(rhs)) : Plain(cholesky_->solve(rhs));
   }
   Eigen::MatrixXd S_;
   Eigen::VectorXd kappa_;

@@ -81,15 +81,6 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   }
   expect_structure_under_loads(s, f);
   CouplingResult result = loop.run();
-  // The outputs that draw or write the whole fluid need the last solution everywhere
-  // (the substructured solve leaves the far field until asked).
-  if ((c.output.png || c.output.vtu) && f.stokes->has_solution()) {
-    try {
-      f.stokes->solution();
-    } catch (const SolverFailure& e) {
-      if (result.failure.empty()) result.failure = std::string("the fluid solve (far field) failed: ") + e.what();
-    }
-  }
   for (const auto& r : result.history) {
     times.add("fluid", r.t_fluid);
     times.add("structure", r.t_structure);
@@ -226,17 +217,25 @@ Json fsi_summary(const Case& c, FsiSetup& su, const CouplingResult& result, cons
   return j;
 }
 
-// Write: the fields where they exist everywhere (a solution exact near the
-// structure only, whose expansion failed, draws nothing), history.csv, case.toml.
+// The last fluid solution everywhere, for the outputs that draw or write the whole
+// fluid (the substructured solve leaves the far field until asked); null without them,
+// or if that fails (said in result.failure).
+const FluidSolution* fluid_everywhere(const Case& c, FluidSetup& f, CouplingResult& result) {
+  if (!(c.output.png || c.output.vtu) || !f.stokes->has_solution()) return nullptr;
+  try {
+    return &f.stokes->solution();
+  } catch (const SolverFailure& e) {
+    if (result.failure.empty()) result.failure = std::string("the fluid solve (far field) failed: ") + e.what();
+    return nullptr;
+  }
+}
+
+// Write: the fields where they exist everywhere (`fluid`: null draws no fluid),
+// history.csv, case.toml.
 void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const CouplingResult& result,
-                     const Mesh& deformed, bool fluid_only) {
+                     const FluidSolution* fluid, const Mesh& deformed, bool fluid_only) {
   StructureSetup& s = su.s;
   FluidSetup& f = su.f;
-  const FluidSolution* fluid = nullptr;
-  if (f.stokes->has_solution() && (c.output.png || c.output.vtu)) try {
-      fluid = &f.stokes->solution();
-    } catch (const SolverFailure&) {  // said in result.failure by couple()
-    }
   if (c.output.vtu && fluid) {
     const bool fluid_vtu =
         out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
@@ -281,6 +280,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   };
   CouplingResult result = fluid_only ? solve_fluid_alone(c, su.s, su.f, times)
                                      : couple(c, su.s, su.f, times, progress, options.initial_displacement);
+  const FluidSolution* fluid = fluid_everywhere(c, su.f, result);
 
   const Eigen::VectorXd& u = result.structure.u;
   const Mesh deformed = displaced(su.s.mesh(), component(u, 0), component(u, 1));
@@ -293,7 +293,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   if (!result.failure.empty()) r.failure = result.failure + " (the last good state is written in " + c.output.dir + "/)";
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
-    write_fsi_files(out, c, su, result, deformed, fluid_only);
+    write_fsi_files(out, c, su, result, fluid, deformed, fluid_only);
   };
   write_outputs(c, r, files, [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;

@@ -45,11 +45,7 @@ void require_no_rigid_motion(const Mesh& mesh, const std::vector<int>& fixed) {
 }  // namespace
 
 std::vector<int> clamped_dofs(const Mesh& mesh, int label) {
-  std::vector<int> dofs;
-  for (int v : mesh.vertices_on(label))
-    for (int c = 0; c < 2; ++c) dofs.push_back(dof(v, c, mesh.num_vertices()));
-  std::sort(dofs.begin(), dofs.end());
-  return dofs;
+  return both_components(mesh.vertices_on(label), mesh.num_vertices());
 }
 
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,

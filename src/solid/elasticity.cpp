@@ -1,5 +1,6 @@
 #include "solid/elasticity.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "fem/integration.hpp"
@@ -10,23 +11,26 @@ Lame Lame::from_young_poisson(double E, double nu) {
   return {nu * E / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
 }
 
+std::vector<int> both_components(const std::vector<int>& nodes, int n) {
+  std::vector<int> dofs;
+  for (int node : nodes)
+    for (int c = 0; c < 2; ++c) dofs.push_back(dof(node, c, n));
+  std::sort(dofs.begin(), dofs.end());
+  return dofs;
+}
+
 SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
   const int nv = mesh.num_vertices();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(36 * mesh.triangles.size());
   for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
     const auto& tri = mesh.triangles[t];
-    // ε(φ_a e_c):ε(φ_b e_d) = ½(δ_cd ∇φ_a·∇φ_b + ∂_d φ_a ∂_c φ_b), div(φ_a e_c) = ∂_c φ_a.
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        const double gradgrad = T.grad.row(a).dot(T.grad.row(b));
+      for (int b = 0; b < 3; ++b)
         for (int c = 0; c < 2; ++c)
-          for (int d = 0; d < 2; ++d) {
-            const double k = lame.lambda * T.grad(a, c) * T.grad(b, d) +
-                             lame.mu * ((c == d ? gradgrad : 0.0) + T.grad(a, d) * T.grad(b, c));
-            entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * k);
-          }
-      }
+          for (int d = 0; d < 2; ++d)
+            entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv),
+                                 T.area * elasticity_entry(lame, T.grad.row(a), T.grad.row(b), c, d));
   });
   SparseMatrix A(2 * nv, 2 * nv);
   A.setFromTriplets(entries.begin(), entries.end());

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -22,6 +23,16 @@ struct Lame {
 
 inline int dof(int vertex, int component, int num_vertices) {
   return component * num_vertices + vertex;
+}
+
+// Both components of each of `nodes` (n nodes in all), sorted: a clamped side's dofs.
+std::vector<int> both_components(const std::vector<int>& nodes, int n);
+
+// a_S(ψ_b e_d, ψ_a e_c) for basis functions with gradients ga = ∇ψ_a, gb = ∇ψ_b (P1's
+// ∇λ, P2's ∇N): ε(ψ_a e_c):ε(ψ_b e_d) = ½(δ_cd ∇ψ_a·∇ψ_b + ∂_d ψ_a ∂_c ψ_b), div(ψ_a e_c) = ∂_c ψ_a.
+inline double elasticity_entry(const Lame& lame, const Eigen::RowVector2d& ga, const Eigen::RowVector2d& gb, int c,
+                               int d) {
+  return lame.lambda * ga[c] * gb[d] + lame.mu * ((c == d ? ga.dot(gb) : 0.0) + ga[d] * gb[c]);
 }
 
 // A_S: (A_S)_ij = a_S(φ_j, φ_i) = ∫ λ div φ_j div φ_i + 2μ ε(φ_j):ε(φ_i).

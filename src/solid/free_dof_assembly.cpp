@@ -38,12 +38,7 @@ FreeDofAssembler::FreeDofAssembler(const Mesh& mesh, const std::vector<int>& fre
 }
 
 Matrix2 FreeDofAssembler::gradient(int t, const Eigen::VectorXd& u) const {
-  const int nv = mesh_.num_vertices();
-  const auto& tri = mesh_.triangles[t];
-  Matrix2 F = Matrix2::Identity();
-  for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 2; ++c) F.row(c) += u[dof(tri[a], c, nv)] * geometry_[t].grad.row(a);
-  return F;
+  return deformation_gradient(geometry_[t], mesh_.triangles[t], u, mesh_.num_vertices());
 }
 
 Eigen::VectorXd FreeDofAssembler::force(const Material& m, const Eigen::VectorXd& u) const {
@@ -70,7 +65,7 @@ void FreeDofAssembler::tangent(const Material& m, const Eigen::VectorXd& u, Spar
     const Matrix2 F = gradient(t, u);
     const int* slots = &slot_[36 * static_cast<std::size_t>(t)];
     const Eigen::Matrix4d A = m.moduli(F);
-    // K_(a c),(b d) = |T| Σ_{J,L} A(2c + J, 2d + L) ∂_J λ_a ∂_L λ_b.
+    // K_(a c),(b d) = |T| Σ_{J,L} A(2c + J, 2d + L) ∂_J λ_a ∂_L λ_b, A ∇λ_b once per (b, d).
     for (int b = 0; b < 3; ++b)
       for (int d = 0; d < 2; ++d) {
         const Eigen::Vector4d Ag = A.middleCols<2>(2 * d) * T.grad.row(b).transpose();

@@ -16,6 +16,15 @@ MaterialModel material_model(const std::string& name) {
   throw std::invalid_argument("unknown structure.model \"" + name + "\"");
 }
 
+const char* material_name(MaterialModel model) {
+  switch (model) {
+    case MaterialModel::linear: return "linear";
+    case MaterialModel::saint_venant_kirchhoff: return "saint-venant-kirchhoff";
+    case MaterialModel::neo_hookean: return "neo-hookean";
+  }
+  return "";
+}
+
 namespace {
 
 // J = det F > 0, or a SolverFailure: the neo-Hookean energy is infinite at J → 0⁺ and
@@ -93,53 +102,27 @@ Matrix2 Material::stress_derivative(const Matrix2& F, const Matrix2& dF) const {
 }
 
 Eigen::Matrix4d Material::moduli(const Matrix2& F) const {
-  const double l = lame.lambda, mu = lame.mu;
-  const Matrix2 I = Matrix2::Identity();
   Eigen::Matrix4d A;
-  auto column = [&](int k, int L, const Matrix2& dP) {
-    for (int i = 0; i < 2; ++i)
-      for (int J = 0; J < 2; ++J) A(2 * i + J, 2 * k + L) = dP(i, J);
-  };
-  if (model == MaterialModel::saint_venant_kirchhoff) {
-    const Matrix2 S = l * (0.5 * (F.transpose() * F - I)).trace() * I + mu * (F.transpose() * F - I);
-    for (int k = 0; k < 2; ++k)
-      for (int L = 0; L < 2; ++L) {
-        Matrix2 dF = Matrix2::Zero();
-        dF(k, L) = 1;
-        const Matrix2 dE = 0.5 * (dF.transpose() * F + F.transpose() * dF);
-        column(k, L, dF * S + F * (l * dE.trace() * I + 2 * mu * dE));
-      }
-    return A;
-  }
-  if (model == MaterialModel::neo_hookean) {
-    const double lnJ = std::log(positive_jacobian(F));
-    const Matrix2 Finv = F.inverse(), Finv_T = Finv.transpose();
-    for (int k = 0; k < 2; ++k)
-      for (int L = 0; L < 2; ++L) {
-        // dF = e_k ⊗ e_L: F⁻ᵀ dFᵀ F⁻ᵀ = (F⁻ᵀ e_L)(e_kᵀ F⁻ᵀ), tr(F⁻¹ dF) = F⁻¹(L, k).
-        const Matrix2 dFinv_T = -Finv_T.col(L) * Finv_T.row(k);
-        Matrix2 dF = Matrix2::Zero();
-        dF(k, L) = 1;
-        column(k, L, mu * (dF - dFinv_T) + l * Finv(L, k) * Finv_T + l * lnJ * dFinv_T);
-      }
-    return A;
-  }
   for (int k = 0; k < 2; ++k)
     for (int L = 0; L < 2; ++L) {
       Matrix2 dF = Matrix2::Zero();
       dF(k, L) = 1;
-      column(k, L, stress_derivative(F, dF));
+      const Matrix2 dP = stress_derivative(F, dF);
+      for (int i = 0; i < 2; ++i)
+        for (int J = 0; J < 2; ++J) A(2 * i + J, 2 * k + L) = dP(i, J);
     }
   return A;
 }
 
-Matrix2 deformation_gradient(const Mesh& mesh, int t, const Eigen::VectorXd& u) {
-  const P1Triangle T(mesh, t);
-  const int nv = mesh.num_vertices();
+Matrix2 deformation_gradient(const P1Triangle& T, const std::array<int, 3>& tri, const Eigen::VectorXd& u, int nv) {
   Matrix2 F = Matrix2::Identity();
   for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 2; ++c) F.row(c) += u[dof(mesh.triangles[t][a], c, nv)] * T.grad.row(a);
+    for (int c = 0; c < 2; ++c) F.row(c) += u[dof(tri[a], c, nv)] * T.grad.row(a);
   return F;
+}
+
+Matrix2 deformation_gradient(const Mesh& mesh, int t, const Eigen::VectorXd& u) {
+  return deformation_gradient(P1Triangle(mesh, t), mesh.triangles[t], u, mesh.num_vertices());
 }
 
 double stored_energy(const Mesh& mesh, const Material& m, const Eigen::VectorXd& u) {

@@ -9,8 +9,10 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
+#include <array>
 #include <string>
 
+#include "fem/p1.hpp"
 #include "mesh/mesh.hpp"
 #include "solid/elasticity.hpp"
 
@@ -22,6 +24,7 @@ enum class MaterialModel { linear, saint_venant_kirchhoff, neo_hookean };
 // "linear" | "saint-venant-kirchhoff" | "neo-hookean" (structure.model);
 // std::invalid_argument otherwise.
 MaterialModel material_model(const std::string& name);
+const char* material_name(MaterialModel model);  // the inverse
 
 struct Material {
   MaterialModel model = MaterialModel::linear;
@@ -37,12 +40,14 @@ struct Material {
   // dP = ∂P/∂F [dF].
   Matrix2 stress_derivative(const Matrix2& F, const Matrix2& dF) const;
   // The tangent moduli A(2i + J, 2k + L) = ∂P_iJ/∂F_kL: stress_derivative along the four
-  // unit directions, with what depends on F alone computed once.
+  // unit directions (once per point: an assembly contracts them with each basis pair).
   Eigen::Matrix4d moduli(const Matrix2& F) const;
 };
 
-// F = I + ∇u on triangle t (u: 2nv, paper ordering).
+// F = I + ∇u on triangle t (u: 2nv, paper ordering); the same from its P1 geometry T
+// and vertices `tri` (nv vertices).
 Matrix2 deformation_gradient(const Mesh& mesh, int t, const Eigen::VectorXd& u);
+Matrix2 deformation_gradient(const P1Triangle& T, const std::array<int, 3>& tri, const Eigen::VectorXd& u, int nv);
 // ∫ W(F(u)) over Ω_S0.
 double stored_energy(const Mesh& mesh, const Material& m, const Eigen::VectorXd& u);
 // f_int(u) (2nv).

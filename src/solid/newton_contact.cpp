@@ -104,9 +104,12 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
       return false;
     }
     ++report.steps;
-    double s = 1, r_new = INFINITY;
+    // The step, halved while it folds a triangle or does not reduce the residual; the
+    // kMaxCuts-th halving is taken as it is.
+    double r_new = INFINITY;
     Eigen::VectorXd u_new = u, f_new;
-    for (int cut = 0; cut <= kMaxCuts; ++cut, s *= 0.5) {
+    int cut = 0;
+    for (double s = 1;; s *= 0.5, ++cut) {
       u_new(free_dofs_) = x_k + s * (qp.x - x_k);
       try {
         f_new = assembler_->force(material_, u_new);
@@ -114,9 +117,9 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
       } catch (const SolverFailure&) {  // a folded triangle: shorter
         r_new = INFINITY;
       }
-      if (std::isfinite(r_new) && r_new < r_prev) break;
-      if (cut > 0) ++report.cuts;
+      if ((std::isfinite(r_new) && r_new < r_prev) || cut == kMaxCuts) break;
     }
+    report.cuts += cut;
     if (!std::isfinite(r_new)) return false;
     u = u_new;
     f = f_new;
@@ -140,8 +143,8 @@ void ElasticContactSolver::require_unfolded(const Eigen::VectorXd& u) const {
     if (!(deformation_gradient(mesh_, t, u).determinant() > 0)) ++folded;
   if (folded)
     throw SolverFailure("the structure's equilibrium folds " + std::to_string(folded) +
-                        " triangle(s) (det F <= 0): structure.model = \"saint-venant-kirchhoff\" is not valid "
-                        "under such compression; allowed: \"neo-hookean\" (its energy keeps det F > 0) or smaller loads");
+                        " triangle(s) (det F <= 0): structure.model = \"" + material_name(material_.model) +
+                        "\" is not valid under such compression; allowed: \"neo-hookean\" (its energy keeps det F > 0) or smaller loads");
 }
 
 ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm) {
@@ -164,8 +167,7 @@ ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S
                 "applied whole or in up to %d increments (last residual %.3g)", newton_tol, newton_max_steps,
                 kMaxLoadSteps, report.residual);
   throw SolverFailure("Newton's method for the structure (structure.model = \"" +
-                      std::string(material_.model == MaterialModel::neo_hookean ? "neo-hookean" : "saint-venant-kirchhoff") +
-                      "\") " + numbers + "; the last attempt's residuals: " + history_text(report.history) +
+                      std::string(material_name(material_.model)) + "\") " + numbers + "; the last attempt's residuals: " + history_text(report.history) +
                       (last_newton_failure_.empty() ? "" : "; the QP: " + last_newton_failure_));
 }
 

@@ -36,26 +36,17 @@ SparseMatrix from_triplets(const Triplets& entries, int n) {
 
 }  // namespace
 
-Matrix2 deformation_gradient(const P2Space& space, int t, const Eigen::Vector3d& lambda, const Eigen::VectorXd& u) {
-  return gradient_at(space.element(t), p2_values(P1Triangle(space.mesh(), t), lambda), u, space.num_nodes());
-}
-
 SparseMatrix assemble_elasticity(const P2Space& space, const Lame& lame) {
   const int n = space.num_nodes();
   Triplets entries;
   entries.reserve(144 * 3 * space.mesh().triangles.size());
   integrate_p2(space, triangle_rule(2), [&](int, const std::array<int, 6>& nodes, const P2Values& v, const Point&, double dx) {
-    // As P1's: ε(N_a e_c):ε(N_b e_d) = ½(δ_cd ∇N_a·∇N_b + ∂_d N_a ∂_c N_b), div(N_a e_c) = ∂_c N_a.
     for (int a = 0; a < 6; ++a)
-      for (int b = 0; b < 6; ++b) {
-        const double gradgrad = v.grad.row(a).dot(v.grad.row(b));
+      for (int b = 0; b < 6; ++b)
         for (int c = 0; c < 2; ++c)
-          for (int d = 0; d < 2; ++d) {
-            const double k = lame.lambda * v.grad(a, c) * v.grad(b, d) +
-                             lame.mu * ((c == d ? gradgrad : 0.0) + v.grad(a, d) * v.grad(b, c));
-            entries.emplace_back(dof(nodes[a], c, n), dof(nodes[b], d, n), dx * k);
-          }
-      }
+          for (int d = 0; d < 2; ++d)
+            entries.emplace_back(dof(nodes[a], c, n), dof(nodes[b], d, n),
+                                 dx * elasticity_entry(lame, v.grad.row(a), v.grad.row(b), c, d));
   });
   return from_triplets(entries, n);
 }
@@ -123,11 +114,7 @@ Eigen::VectorXd assemble_surface_load(const P2Space& space, int label, const Vec
 }
 
 std::vector<int> clamped_dofs(const P2Space& space, int label) {
-  std::vector<int> dofs;
-  for (int node : space.nodes_on(label))
-    for (int c = 0; c < 2; ++c) dofs.push_back(dof(node, c, space.num_nodes()));
-  std::sort(dofs.begin(), dofs.end());
-  return dofs;
+  return both_components(space.nodes_on(label), space.num_nodes());
 }
 
 }  // namespace fsi

@@ -24,7 +24,5 @@ Eigen::VectorXd assemble_volume_load(const P2Space& space, const VectorField& f,
 Eigen::VectorXd assemble_surface_load(const P2Space& space, int label, const VectorField& h, int points = 3);
 // Both components of every node on `label` (a clamped side).
 std::vector<int> clamped_dofs(const P2Space& space, int label);
-// F = I + ∇u at barycentric point λ of triangle t.
-Matrix2 deformation_gradient(const P2Space& space, int t, const Eigen::Vector3d& lambda, const Eigen::VectorXd& u);
 
 }  // namespace fsi
