@@ -36,6 +36,28 @@ std::vector<int> P2Space::nodes_on(int label) const {
   return out;
 }
 
+Mesh nodal_mesh(const P2Space& space) {
+  const Mesh& mesh = space.mesh();
+  Mesh out;
+  out.vertices = space.nodes();
+  out.label_names = mesh.label_names;
+  out.triangles.reserve(4 * mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const std::array<int, 6>& e = space.element(t);  // vertices 0 1 2, midpoints 01 12 20
+    out.triangles.push_back({e[0], e[3], e[5]});       // counter-clockwise as the parent
+    out.triangles.push_back({e[3], e[1], e[4]});
+    out.triangles.push_back({e[5], e[4], e[2]});
+    out.triangles.push_back({e[3], e[4], e[5]});
+  }
+  out.boundary_edges.reserve(2 * mesh.boundary_edges.size());
+  for (const BoundaryEdge& b : mesh.boundary_edges) {
+    const int m = space.midpoint_of(b);
+    out.boundary_edges.push_back({{b.v[0], m}, b.label});
+    out.boundary_edges.push_back({{m, b.v[1]}, b.label});
+  }
+  return out;
+}
+
 P2Values p2_values(const P1Triangle& T, const Eigen::Vector3d& l) {
   P2Values v;
   for (int a = 0; a < 3; ++a) {

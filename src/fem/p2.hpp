@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <vector>
+#include <utility>
 
 #include "fem/p1.hpp"
 #include "mesh/mesh.hpp"
@@ -45,5 +46,22 @@ struct P2Values {
   Eigen::Matrix<double, 6, 2> grad;  // row i: ∇N_i
 };
 P2Values p2_values(const P1Triangle& T, const Eigen::Vector3d& lambda);
+
+// The nodal mesh of a P2 space: its nodes as vertices (same indices), each triangle cut
+// into four at its edge midpoints, each boundary edge into two with its label. A P2
+// displacement (dof(node, c) = c·n + node) is then a P1 displacement of this mesh, and
+// its piecewise-linear interpolant through the nodes is what the runs draw, write and
+// give the fluid as the deformed structure (χ, the figures, the gap's candidates, the
+// contact rows: docs/theory.md, "P2").
+Mesh nodal_mesh(const P2Space& space);
+
+// A P2 space that owns its mesh: what a run keeps beside the structure's solver.
+struct OwnedP2Space {
+  explicit OwnedP2Space(Mesh m) : mesh(std::move(m)), space(mesh) {}
+  OwnedP2Space(const OwnedP2Space&) = delete;
+  OwnedP2Space& operator=(const OwnedP2Space&) = delete;
+  const Mesh mesh;  // the element mesh (straight-sided triangles)
+  const P2Space space;
+};
 
 }  // namespace fsi

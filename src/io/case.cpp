@@ -148,6 +148,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.shape = s.choice("shape", !p.mesh.empty() ? "mesh" : !p.geo.empty() ? "geo" : "rectangle",
                      {"rectangle", "mesh", "geo", "none"});
   p.model = s.choice("model", p.model, {"linear", "saint-venant-kirchhoff", "neo-hookean"});
+  p.element = s.choice("element", p.element, {"P1", "P2"});
   check_shape_files(p, origin);
   s.reject_unknown();
 }
@@ -336,6 +337,7 @@ std::string to_toml(const Case& c) {
   if (!s.mesh.empty()) st.insert("mesh", s.mesh);
   if (!s.geo.empty()) st.insert("geo", s.geo);
   if (s.model != "linear") st.insert("model", s.model);  // the default stays unwritten (Table 1's case.toml)
+  if (s.element != "P1") st.insert("element", s.element);
   t.insert("structure", st);
   const auto& o = c.obstacle;
   if (!c.obstacles_given) {

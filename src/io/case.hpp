@@ -25,6 +25,7 @@ struct StructureParams {
   std::string geo;               // the .geo script of shape "geo" (resolved path)
   // SPEC §11: "linear" (eq. 16, the paper) | "saint-venant-kirchhoff" | "neo-hookean".
   std::string model = "linear";
+  std::string element = "P1";  // structure.element (SPEC §11): "P1" | "P2"
   bool rectangle() const { return shape == "rectangle"; }
   // The given file (mesh or script), for messages; empty for the rectangle.
   const std::string& file() const { return shape == "geo" ? geo : mesh; }

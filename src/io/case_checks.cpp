@@ -233,6 +233,11 @@ void check_fluid_method(const Case& c, const Origin& o) {
     fail(o, "coupling.force", "= \"" + c.coupling.force + "\" is the penalised method's pull-back of eq. (33); "
                               "fluid.method = \"body-fitted\" has its own force on the fitted interface",
          "\"small\" with fluid.method = \"body-fitted\", or \"large\" with \"penalised\"");
+  // Its traction on the fitted interface is tested against P1 traces only (body_fitted_force.hpp).
+  if (c.structure.element != "P1")
+    fail(o, "structure.element", "= \"" + c.structure.element + "\": fluid.method = \"body-fitted\" transfers its "
+                                 "traction to P1 structures only",
+         "\"P1\" with fluid.method = \"body-fitted\", or \"P2\" with \"penalised\"");
 }
 
 // SPEC §10 "Box sides": at least one side must be an outflow. There is no

@@ -19,8 +19,13 @@ VtuField scalar_field(const std::string& name, const Eigen::VectorXd& v, bool on
   return {name, 1, std::vector<double>(v.data(), v.data() + v.size()), on_cells};
 }
 
-void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields) {
-  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
+namespace {
+
+// One piece: the points, `nodes_per_cell` point indices a cell (flat), its VTK type.
+void write_piece(const std::string& path, const std::vector<Point>& points, const std::vector<int>& connectivity,
+                 int nodes_per_cell, int vtk_type, const std::vector<VtuField>& fields) {
+  const int nv = static_cast<int>(points.size());
+  const int nt = static_cast<int>(connectivity.size()) / nodes_per_cell;
   for (const auto& f : fields)
     if (f.values.size() != static_cast<std::size_t>((f.on_cells ? nt : nv) * f.components))
       throw std::logic_error("vtu field '" + f.name + "' has the wrong size");
@@ -43,17 +48,35 @@ void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuF
       out << (cells ? "</CellData>\n" : "</PointData>\n");
     }
     out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto& p : mesh.vertices) out << p.x() << ' ' << p.y() << " 0\n";
+    for (const auto& p : points) out << p.x() << ' ' << p.y() << " 0\n";
     out << "</DataArray>\n</Points>\n<Cells>\n"
         << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto& t : mesh.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    for (std::size_t i = 0; i < connectivity.size(); ++i)
+      out << connectivity[i] << ((i + 1) % nodes_per_cell == 0 ? '\n' : ' ');
     out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-    for (int t = 1; t <= nt; ++t) out << 3 * t << '\n';
+    for (int t = 1; t <= nt; ++t) out << nodes_per_cell * t << '\n';
     out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (int t = 0; t < nt; ++t) out << "5\n";  // VTK_TRIANGLE
+    for (int t = 0; t < nt; ++t) out << vtk_type << '\n';
     out << "</DataArray>\n</Cells>\n";
     out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   });
+}
+
+}  // namespace
+
+void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields) {
+  std::vector<int> connectivity;
+  connectivity.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) connectivity.insert(connectivity.end(), t.begin(), t.end());
+  write_piece(path, mesh.vertices, connectivity, 3, 5, fields);  // VTK_TRIANGLE
+}
+
+void write_quadratic_vtu(const std::string& path, const std::vector<Point>& nodes,
+                         const std::vector<std::array<int, 6>>& cells, const std::vector<VtuField>& fields) {
+  std::vector<int> connectivity;
+  connectivity.reserve(6 * cells.size());
+  for (const auto& t : cells) connectivity.insert(connectivity.end(), t.begin(), t.end());
+  write_piece(path, nodes, connectivity, 6, 22, fields);  // VTK_QUADRATIC_TRIANGLE
 }
 
 void write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {

@@ -3,6 +3,7 @@
 // and Debian's VTK (libvtk9-dev) would add ~100 MB of dependencies for it.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ VtuField vector_field(const std::string& name, const Eigen::VectorXd& x, const E
 VtuField scalar_field(const std::string& name, const Eigen::VectorXd& v, bool on_cells = false);
 
 void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields);
+// Quadratic triangles (VTK_QUADRATIC_TRIANGLE, type 22; structure.element = "P2"):
+// `cells` six indices into `nodes` each, the vertices and then the midpoints of the
+// edges 0→1, 1→2, 2→0, which is VTK's order and P2Space's. Point data on the nodes.
+void write_quadratic_vtu(const std::string& path, const std::vector<Point>& nodes,
+                         const std::vector<std::array<int, 6>>& cells, const std::vector<VtuField>& fields);
 
 struct PvdEntry {
   std::string file;  // relative to the .pvd

@@ -6,8 +6,21 @@ namespace fsi {
 
 namespace {
 
-// The P1 interpolant of u at a located point.
-Point interpolate(const Mesh& reference, const Eigen::VectorXd& u, const Location& at) {
+// The P2 interpolant of u at a point located in p2's element mesh.
+Point interpolate(const P2Space& p2, const Eigen::VectorXd& u, const Location& at) {
+  const int n = p2.num_nodes();
+  const P2Values v = p2_values(P1Triangle(p2.mesh(), at.triangle), at.lambda);
+  Point d(0, 0);
+  for (int a = 0; a < 6; ++a) {
+    const int node = p2.element(at.triangle)[a];
+    d += v.N[a] * Point(u[node], u[n + node]);
+  }
+  return d;
+}
+
+// The P1 interpolant of u at a located point (or P2's, with p2).
+Point interpolate(const Mesh& reference, const Eigen::VectorXd& u, const Location& at, const P2Space* p2) {
+  if (p2) return interpolate(*p2, u, at);
   const int nv = reference.num_vertices();
   Point d(0, 0);
   for (int a = 0; a < 3; ++a) {
@@ -19,19 +32,20 @@ Point interpolate(const Mesh& reference, const Eigen::VectorXd& u, const Locatio
 
 }  // namespace
 
-Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X) {
-  return interpolate(reference, u, PointLocator(reference).locate_or_nearest(X));
+Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X, const P2Space* p2) {
+  return interpolate(reference, u, PointLocator(p2 ? p2->mesh() : reference).locate_or_nearest(X), p2);
 }
 
-ProbeSet::ProbeSet(const Mesh& reference, const std::vector<Point>& points) : reference_(reference) {
+ProbeSet::ProbeSet(const Mesh& reference, const std::vector<Point>& points, const P2Space* p2)
+    : reference_(reference), p2_(p2) {
   if (points.empty()) return;
-  const PointLocator locator(reference);
+  const PointLocator locator(p2 ? p2->mesh() : reference);
   for (const Point& X : points) at_.push_back(locator.locate_or_nearest(X));
 }
 
 std::vector<Point> ProbeSet::displacements(const Eigen::VectorXd& u) const {
   std::vector<Point> d;
-  for (const Location& at : at_) d.push_back(interpolate(reference_, u, at));
+  for (const Location& at : at_) d.push_back(interpolate(reference_, u, at, p2_));
   return d;
 }
 

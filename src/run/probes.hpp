@@ -6,20 +6,22 @@
 #include <vector>
 
 #include "coupling/coupling_result.hpp"
+#include "fem/p2.hpp"
 #include "fem/point_locator.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fsi {
 
 // u (2nv, paper ordering) interpolated at the reference point X (the nearest point of
-// the mesh if X is outside it).
-Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X);
+// the mesh if X is outside it). With `p2` (structure.element = "P2"; `reference` its
+// nodal mesh) u is the P2 field, interpolated by the quadratic basis of p2's element.
+Point displacement_at(const Mesh& reference, const Eigen::VectorXd& u, const Point& X, const P2Space* p2 = nullptr);
 
 // output.probes (SPEC §11): the same at fixed points, read many times (each
 // fixed-point pass, history.csv), the points located once.
 class ProbeSet {
  public:
-  ProbeSet(const Mesh& reference, const std::vector<Point>& points);
+  ProbeSet(const Mesh& reference, const std::vector<Point>& points, const P2Space* p2 = nullptr);
   // u at each point, in the points' order.
   std::vector<Point> displacements(const Eigen::VectorXd& u) const;
   // Fills each pass's record with ũ at the points (none if there are no points).
@@ -27,7 +29,8 @@ class ProbeSet {
 
  private:
   const Mesh& reference_;
-  std::vector<Location> at_;
+  const P2Space* p2_;
+  std::vector<Location> at_;  // in p2's element mesh with P2
 };
 
 // [Σ F_x, Σ F_y] of a nodal load vector (2nv): tested with w = e_x, e_y, the force

@@ -84,8 +84,8 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
   add_measures(j, m);
   j["solver"] = s.qp->name();
   j["qp_status"] = solution.qp.status;
-  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), solution.u);
-  add_displacement_at(j, c, s.mesh(), solution.u);
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), solution.u, s.p2());
+  add_displacement_at(j, c, s.mesh(), solution.u, s.p2());
   j["contact"] = to_json(contact);
   add_gap_summary(j["contact"], c, s, solution);
   j["contact"]["linearisations"] = s.gap->linearisations();

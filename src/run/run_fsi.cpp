@@ -41,10 +41,14 @@ double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const
 }
 
 // eq. (33)'s fluid terms, with the case's fluid and ε, on the reference mesh.
-FluidForce fluid_force_of(const Case& c, const Mesh& reference) {
+// Eq. (33) or its pull-back, on the structure's P1 mesh or its P2 space (the fields
+// sampled at the nodal mesh's vertices, which are the P2 nodes).
+FluidForce fluid_force_of(const Case& c, const StructureSetup& s) {
   const Point f_F = c.fluid->f;
-  return FluidForce(reference, c.fluid->mu, c.coupling.eps, [f_F](const Point&) { return f_F; },
-                    c.coupling.force == "large" ? ForceModel::large : ForceModel::small);
+  const auto f = [f_F](const Point&) { return f_F; };
+  const ForceModel model = c.coupling.force == "large" ? ForceModel::large : ForceModel::small;
+  if (s.p2()) return FluidForce(*s.p2(), c.fluid->mu, c.coupling.eps, f, model);
+  return FluidForce(s.mesh(), c.fluid->mu, c.coupling.eps, f, model);
 }
 
 // The fluid alone around the structure at rest: one solve, and its force on the
@@ -57,19 +61,19 @@ CouplingResult solve_fluid_alone(const Case& c, StructureSetup& s, FluidSetup& f
   result.structure = s.solver->at_rest();
   result.converged = true;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(2 * s.mesh().num_vertices());
-  result.fluid_load = fluid_force_of(c, s.mesh())(sample_at_deformed_vertices(FluidField(*f.locator, v), s.mesh(), rest), rest);
+  result.fluid_load = fluid_force_of(c, s)(sample_at_deformed_vertices(FluidField(*f.locator, v), s.mesh(), rest), rest);
   return result;
 }
 
 CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTimes& times,
                       const std::function<void(const std::string&)>& progress, const Eigen::VectorXd* initial) {
   const Mesh& ref = s.mesh();
-  const FluidForce force = fluid_force_of(c, ref);
+  const FluidForce force = fluid_force_of(c, s);
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, assemble_vector_mass(ref));
   FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force}, *relaxation,
                           c.coupling.tol, c.coupling.max_iterations);
   loop.progress = progress;
-  const ProbeSet probes(ref, c.output.probes);
+  const ProbeSet probes(ref, c.output.probes, s.p2());
   loop.observe = probes.observer();  // history.csv's u_x_i, u_y_i
   if (initial) loop.initial = *initial;
   const ContactGap& gap = *s.gap;
@@ -201,8 +205,8 @@ Json fsi_summary(const Case& c, FsiSetup& su, const CouplingResult& result, cons
   }
   add_measures(j, m);
   const StructureSetup& s = su.s;
-  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), result.structure.u);
-  add_displacement_at(j, c, s.mesh(), result.structure.u);
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), result.structure.u, s.p2());
+  add_displacement_at(j, c, s.mesh(), result.structure.u, s.p2());
   j["structure_force"] = point_json(resultant(result.fluid_load));
   j["structure_load"] = point_json(resultant_off(result.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
   if (!fluid_only) {

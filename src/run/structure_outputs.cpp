@@ -77,10 +77,18 @@ void write_structure_vtu(const std::string& path, const StructureSetup& s,
     status[rows[i]] = solution.qp.active[i] ? 1.0 : 0.0;
   }
   Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
-  write_vtu(path, deformed ? displaced(ref, u1, u2) : ref,
-            {vector_field("displacement", u1, u2), scalar_field("displacement_magnitude", magnitude),
-             scalar_field("contact_multiplier", multiplier), scalar_field("contact_status", status),
-             scalar_field("von_mises", von_mises(ref, s.lame, solution.u), true)});
+  const Mesh points = deformed ? displaced(ref, u1, u2) : ref;
+  std::vector<VtuField> fields{vector_field("displacement", u1, u2), scalar_field("displacement_magnitude", magnitude),
+                               scalar_field("contact_multiplier", multiplier), scalar_field("contact_status", status)};
+  if (const P2Space* p2 = s.p2()) {  // the P2 elements as VTK's quadratic triangles on the nodes
+    std::vector<std::array<int, 6>> cells;
+    for (int t = 0; t < p2->mesh().num_triangles(); ++t) cells.push_back(p2->element(t));
+    fields.push_back(scalar_field("von_mises", von_mises(*p2, s.lame, solution.u), true));
+    write_quadratic_vtu(path, points.vertices, cells, fields);
+    return;
+  }
+  fields.push_back(scalar_field("von_mises", von_mises(ref, s.lame, solution.u), true));
+  write_vtu(path, points, fields);
 }
 
 void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
@@ -106,10 +114,11 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   const ContactSummary cs = summarize_contact(*s.solver, solution);
   char line[256];
   std::snprintf(line, sizeof line,
-                "f_S = (%g, %g) N/m^3, E = %g Pa, nu = %g;  mesh %d triangles / %d vertices;  "
+                "f_S = (%g, %g) N/m^3, E = %g Pa, nu = %g;  %smesh %d triangles / %d %s;  "
                 "max |u| = %.4g m",
-                c.structure.f.x(), c.structure.f.y(), c.structure.E, c.structure.nu,
-                ref.num_triangles(), ref.num_vertices(), magnitude.maxCoeff());
+                c.structure.f.x(), c.structure.f.y(), c.structure.E, c.structure.nu, s.p2() ? "P2 " : "",
+                s.p2() ? s.p2()->mesh().num_triangles() : ref.num_triangles(), ref.num_vertices(),
+                s.p2() ? "nodes" : "vertices", magnitude.maxCoeff());
   fig.note(line);
   if (cs.active_nodes > 0)
     std::snprintf(line, sizeof line,

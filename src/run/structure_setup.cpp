@@ -5,6 +5,7 @@
 #include "common/errors.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/mesh_checks.hpp"
+#include "solid/p2_elasticity.hpp"
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"
 
@@ -47,6 +48,21 @@ Mesh make_structure_mesh(const Case& c) {
   return mesh;
 }
 
+namespace {
+
+// ∫ f_S·w + ∫_{Γ_N} h_S·w for constant f_S, h_N: exact with one point (P1) and with the
+// P2 space's degree-2 triangle and 2-point edge rules.
+Eigen::VectorXd applied_load(const Case& c, const Mesh& mesh, const P2Space* p2) {
+  const Point f = c.structure.f, h_N = c.structure.h_N;
+  const auto f_S = [f](const Point&) { return f; };
+  const auto h_S = [h_N](const Point&) { return h_N; };
+  const int gamma_n = mesh.label("Gamma_N");
+  if (p2) return assemble_volume_load(*p2, f_S, 2) + assemble_surface_load(*p2, gamma_n, h_S, 2);
+  return assemble_volume_load(mesh, f_S, 1) + assemble_surface_load(mesh, gamma_n, h_S, 1);
+}
+
+}  // namespace
+
 StructureSetup make_structure(const Case& c, Mesh mesh,
                               const std::function<void(const std::string&)>& progress) {
   StructureSetup s;
@@ -54,22 +70,26 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   s.foundation = std::make_unique<DiskFoundation>(c.obstacle.x0, c.obstacle.y0, c.obstacle.r);
   s.qp = make_qp_solver(c.contact.solver);
   s.qp->progress = progress;
+  std::shared_ptr<const OwnedP2Space> p2;
+  if (c.structure.element == "P2") {
+    p2 = std::make_shared<const OwnedP2Space>(std::move(mesh));
+    mesh = nodal_mesh(p2->space);
+  }
   const int gamma_c = mesh.label("Gamma_C");
   const std::vector<int> fixed = clamped_dofs(mesh, mesh.label("Gamma_D"));
   s.gap = std::make_shared<ContactGap>(c, mesh);
   try {
-    if (s.gap->normal())  // its first constraint: linearised at rest (no ψ: the obstacles need not be the paper's disk)
-      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, s.gap->at_rest(mesh), gamma_c, fixed, *s.qp);
-    else
-      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation, gamma_c, fixed, *s.qp);
+    if (s.gap->normal()) {  // its first constraint: linearised at rest (no ψ: the obstacles need not be the paper's disk)
+      ContactConstraint at_rest = s.gap->at_rest(mesh);  // before `mesh` is moved from
+      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, std::move(at_rest), gamma_c, fixed,
+                                                        *s.qp, p2);
+    } else
+      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation, gamma_c, fixed, *s.qp, p2);
   } catch (const QpError& e) {
     throw SolverFailure(std::string("structure: ") + e.what());
   }
   if (c.structure.model != "linear") s.solver->set_material({material_model(c.structure.model), s.lame});
-  const Point f = c.structure.f, h_N = c.structure.h_N;
-  const Mesh& m = s.mesh();
-  s.b_applied = assemble_volume_load(m, [f](const Point&) { return f; }, 1) +
-                assemble_surface_load(m, m.label("Gamma_N"), [h_N](const Point&) { return h_N; }, 1);
+  s.b_applied = applied_load(c, s.mesh(), s.p2());
   return s;
 }
 

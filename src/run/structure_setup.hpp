@@ -22,7 +22,9 @@ struct StructureSetup {
   std::unique_ptr<QpSolver> qp;
   std::unique_ptr<ElasticContactSolver> solver;
   Eigen::VectorXd b_applied;  // ∫ f_S·w + ∫_{Γ_N} h_S·w (eq. 16)
+  // The mesh the dofs live on: the structure's (P1) or its P2 space's nodal mesh.
   const Mesh& mesh() const { return solver->mesh(); }
+  const P2Space* p2() const { return solver->p2(); }  // null with structure.element = "P1"
 };
 
 // Generates or reads the mesh: a bad user file is an InputError (exit 2), a failure
@@ -32,6 +34,8 @@ Mesh build_structure_mesh(const Case& c);
 // build_structure_mesh, then check_structure_mesh (run/mesh_checks.hpp) against the case.
 Mesh make_structure_mesh(const Case& c);
 
+// With structure.element = "P2" the solver's mesh is the nodal mesh of the P2 space on
+// `mesh` (fem/p2.hpp): the contact candidates, Γ_D's dofs and the outputs use it.
 StructureSetup make_structure(const Case& c, Mesh mesh,
                               const std::function<void(const std::string&)>& progress);
 

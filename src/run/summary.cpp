@@ -15,7 +15,8 @@ Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
 
 Json to_json(const StructureParams& s) {
   return {{"shape", s.shape}, {"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)},
-          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}, {"model", s.model}};
+          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}, {"model", s.model},
+          {"element", s.element}};
 }
 
 Json to_json(const ObstacleParams& o) {
@@ -113,14 +114,14 @@ std::optional<Point> tip_of(const Case& c) {
   return Point(c.structure.L, c.structure.H / 2);
 }
 
-Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u) {
+Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u, const P2Space* p2) {
   const std::optional<Point> tip = tip_of(c);
-  return tip ? point_json(displacement_at(reference, u, *tip)) : Json(nullptr);
+  return tip ? point_json(displacement_at(reference, u, *tip, p2)) : Json(nullptr);
 }
 
-void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u) {
+void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u, const P2Space* p2) {
   if (c.output.probes.empty()) return;
-  const std::vector<Point> d = ProbeSet(reference, c.output.probes).displacements(u);
+  const std::vector<Point> d = ProbeSet(reference, c.output.probes, p2).displacements(u);
   Json list = Json::array();
   for (std::size_t i = 0; i < d.size(); ++i) list.push_back({{"point", point_json(c.output.probes[i])}, {"u", point_json(d[i])}});
   j["displacement_at"] = list;

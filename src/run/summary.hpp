@@ -41,11 +41,13 @@ Json point_json(const Point& p);
 // or script without structure.L and H (its "free end" is not known).
 std::optional<Point> tip_of(const Case& c);
 // u at the tip, [x, y], or null without one.
-Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u);
+Json tip_displacement_json(const Case& c, const Mesh& reference, const Eigen::VectorXd& u,
+                           const P2Space* p2 = nullptr);
 
 // summary.json's displacement_at (SPEC §11): [{"point": [x, y], "u": [ux, uy]}, ...], u
 // at each of output.probes in its order (P1 interpolation); no key without probes.
-void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u);
+void add_displacement_at(Json& j, const Case& c, const Mesh& reference, const Eigen::VectorXd& u,
+                         const P2Space* p2 = nullptr);
 
 // max |u| over the vertices of u = (u1, u2) (hypot: nothing under- or overflows).
 double max_displacement(const Eigen::VectorXd& u);

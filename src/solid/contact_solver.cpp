@@ -50,18 +50,23 @@ std::vector<int> clamped_dofs(const Mesh& mesh, int label) {
 
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
                                            const Foundation& foundation, int gamma_c_label,
-                                           const std::vector<int>& fixed_dofs, QpSolver& solver)
+                                           const std::vector<int>& fixed_dofs, QpSolver& solver,
+                                           std::shared_ptr<const OwnedP2Space> p2)
     : ElasticContactSolver(Mesh(mesh), lame, assemble_contact(mesh, gamma_c_label, foundation), gamma_c_label,
-                           fixed_dofs, solver) {}
+                           fixed_dofs, solver, std::move(p2)) {}
 
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
-                                           const std::vector<int>& fixed_dofs, QpSolver& solver)
+                                           const std::vector<int>& fixed_dofs, QpSolver& solver,
+                                           std::shared_ptr<const OwnedP2Space> p2)
     : mesh_(std::move(mesh)),
+      p2_(std::move(p2)),
       gamma_c_label_(gamma_c_label),
       material_{MaterialModel::linear, lame},
-      A_S_(assemble_elasticity(mesh_, lame)),
+      A_S_(p2_ ? assemble_elasticity(p2_->space, lame) : assemble_elasticity(mesh_, lame)),
       contact_(std::move(contact)),
       solver_(solver) {
+  if (p2_ && p2_->space.num_nodes() != mesh_.num_vertices())
+    throw std::invalid_argument("ElasticContactSolver: the mesh is not the P2 space's nodal mesh");
   const int n = 2 * mesh_.num_vertices();
   std::vector<bool> fixed(n, false);
   for (int d : fixed_dofs) fixed.at(d) = true;

@@ -7,12 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "fem/p2.hpp"
 #include "mesh/mesh.hpp"
 #include "qp/qp_problem.hpp"
 #include "solid/contact.hpp"
 #include "solid/elasticity.hpp"
 #include "solid/free_dof_assembly.hpp"
 #include "solid/hyperelastic.hpp"
+#include "solid/p2_elasticity.hpp"
 
 namespace fsi {
 
@@ -36,12 +38,17 @@ class ElasticContactSolver {
  public:
   // `fixed_dofs`: dofs held at zero (Γ_D); they must prevent every rigid motion
   // (std::invalid_argument otherwise). The mesh is copied; `solver` must outlive this.
+  // `p2` (structure.element = "P2"): the operators are P2's on p2->space, and `mesh` is
+  // its nodal mesh (nodal_mesh(p2->space), fem/p2.hpp), on which the contact rows, the
+  // fixed dofs and every output live as on a P1 mesh (docs/theory.md, "P2").
   ElasticContactSolver(Mesh mesh, const Lame& lame, const Foundation& foundation,
-                       int gamma_c_label, const std::vector<int>& fixed_dofs, QpSolver& solver);
+                       int gamma_c_label, const std::vector<int>& fixed_dofs, QpSolver& solver,
+                       std::shared_ptr<const OwnedP2Space> p2 = nullptr);
 
   // The same with a given constraint (contact.gap = "normal": the signed distance's).
   ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
-                       const std::vector<int>& fixed_dofs, QpSolver& solver);
+                       const std::vector<int>& fixed_dofs, QpSolver& solver,
+                       std::shared_ptr<const OwnedP2Space> p2 = nullptr);
 
   // A nonlinear material (structure.model, SPEC §11): solve() is then Newton's method
   // with the contact constraint in every step, each step one QP with the tangent, to a
@@ -71,7 +78,10 @@ class ElasticContactSolver {
 
   const SparseMatrix& A_S() const { return A_S_; }
   const ContactConstraint& contact() const { return contact_; }
+  // The mesh the dofs live on: the structure's mesh (P1), or the P2 space's nodal mesh.
   const Mesh& mesh() const { return mesh_; }
+  const P2Space* p2() const { return p2_ ? &p2_->space : nullptr; }
+  const std::shared_ptr<const OwnedP2Space>& p2_space() const { return p2_; }
   int gamma_c_label() const { return gamma_c_label_; }
   QpSolver& qp_solver() { return solver_; }
 
@@ -83,6 +93,7 @@ class ElasticContactSolver {
                               const Eigen::VectorXd& x, double K_norm) const;
 
   Mesh mesh_;
+  std::shared_ptr<const OwnedP2Space> p2_;
   int gamma_c_label_;
   Material material_;
   std::string last_newton_failure_;  // the QP's words when a Newton step failed

@@ -3,79 +3,106 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "fem/quadrature.hpp"
 #include "solid/elasticity.hpp"
 
 namespace fsi {
-namespace {
-
-// Local index (vertex a, component c) of a triangle's 6 dofs.
-int local(int a, int c) { return 3 * c + a; }
-
-}  // namespace
 
 FreeDofAssembler::FreeDofAssembler(const Mesh& mesh, const std::vector<int>& free_dofs, const SparseMatrix& pattern)
-    : mesh_(mesh) {
-  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
-  reduced_.assign(2 * nv, -1);
+    : n_(mesh.num_vertices()) {
+  elements_.reserve(mesh.triangles.size());
+  points_.reserve(mesh.triangles.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    elements_.push_back({tri[0], tri[1], tri[2], -1, -1, -1});
+    const P1Triangle T(mesh, t);
+    QuadraturePoint q{Eigen::Matrix<double, 6, 2>::Zero(), T.area};
+    q.grad.topRows<3>() = T.grad;
+    points_.push_back(q);
+  }
+  index_slots(free_dofs, pattern);
+}
+
+// Degree 4, as solid/p2_elasticity.cpp's f_int and K_T: Saint-Venant–Kirchhoff's P(F)
+// is cubic in ∇u, which is linear on a P2 triangle.
+FreeDofAssembler::FreeDofAssembler(const P2Space& space, const std::vector<int>& free_dofs, const SparseMatrix& pattern)
+    : nodes_(6), n_(space.num_nodes()) {
+  const Mesh& mesh = space.mesh();
+  const TriangleRule rule = triangle_rule(4);
+  per_element_ = static_cast<int>(rule.w.size());
+  elements_.reserve(mesh.triangles.size());
+  points_.reserve(mesh.triangles.size() * rule.w.size());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    elements_.push_back(space.element(t));
+    const P1Triangle T(mesh, t);
+    for (std::size_t k = 0; k < rule.w.size(); ++k)
+      points_.push_back({p2_values(T, rule.lambda[k]).grad, rule.w[k] * T.area});
+  }
+  index_slots(free_dofs, pattern);
+}
+
+void FreeDofAssembler::index_slots(const std::vector<int>& free_dofs, const SparseMatrix& pattern) {
+  reduced_.assign(2 * static_cast<std::size_t>(n_), -1);
   for (std::size_t k = 0; k < free_dofs.size(); ++k) reduced_[free_dofs[k]] = static_cast<int>(k);
-  geometry_.reserve(nt);
-  slot_.assign(36 * static_cast<std::size_t>(nt), -1);
+  const int local = 2 * nodes_;
+  slot_.assign(static_cast<std::size_t>(local * local) * elements_.size(), -1);
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
-  for (int t = 0; t < nt; ++t) {
-    geometry_.emplace_back(mesh, t);
-    const auto& tri = mesh.triangles[t];
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) {
-        const int r = reduced_[dof(tri[i % 3], i / 3, nv)], col = reduced_[dof(tri[j % 3], j / 3, nv)];
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    for (int i = 0; i < local; ++i)
+      for (int j = 0; j < local; ++j) {
+        const int r = reduced_[dof(elements_[e][i % nodes_], i / nodes_, n_)];
+        const int col = reduced_[dof(elements_[e][j % nodes_], j / nodes_, n_)];
         if (r < 0 || col < 0) continue;
         const int* pos = std::lower_bound(inner + outer[col], inner + outer[col + 1], r);
         if (pos == inner + outer[col + 1] || *pos != r)
           throw std::logic_error("FreeDofAssembler: the pattern lacks a coupling of the mesh");
-        slot_[36 * static_cast<std::size_t>(t) + 6 * i + j] = static_cast<int>(pos - inner);
+        slot_[e * static_cast<std::size_t>(local * local) + static_cast<std::size_t>(local * i + j)] =
+            static_cast<int>(pos - inner);
       }
-  }
 }
 
-Matrix2 FreeDofAssembler::gradient(int t, const Eigen::VectorXd& u) const {
-  return deformation_gradient(geometry_[t], mesh_.triangles[t], u, mesh_.num_vertices());
+Matrix2 FreeDofAssembler::gradient(int e, const QuadraturePoint& q, const Eigen::VectorXd& u) const {
+  Matrix2 F = Matrix2::Identity();
+  for (int a = 0; a < nodes_; ++a)
+    for (int c = 0; c < 2; ++c) F.row(c) += u[dof(elements_[e][a], c, n_)] * q.grad.row(a);
+  return F;
 }
 
 Eigen::VectorXd FreeDofAssembler::force(const Material& m, const Eigen::VectorXd& u) const {
-  const int nv = mesh_.num_vertices();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(
       std::count_if(reduced_.begin(), reduced_.end(), [](int r) { return r >= 0; })));
-  for (int t = 0; t < mesh_.num_triangles(); ++t) {
-    const P1Triangle& T = geometry_[t];
-    const Matrix2 P = m.stress(gradient(t, u));
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 2; ++c) {
-        const int r = reduced_[dof(mesh_.triangles[t][a], c, nv)];
-        if (r >= 0) f[r] += T.area * P.row(c).dot(T.grad.row(a));
-      }
-  }
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e)
+    for (int k = 0; k < per_element_; ++k) {
+      const QuadraturePoint& q = points_of(e)[k];
+      const Matrix2 P = m.stress(gradient(e, q, u));
+      for (int a = 0; a < nodes_; ++a)
+        for (int c = 0; c < 2; ++c) {
+          const int r = reduced_[dof(elements_[e][a], c, n_)];
+          if (r >= 0) f[r] += q.dx * P.row(c).dot(q.grad.row(a));
+        }
+    }
   return f;
 }
 
 void FreeDofAssembler::tangent(const Material& m, const Eigen::VectorXd& u, SparseMatrix& K) const {
   double* values = K.valuePtr();
   std::fill(values, values + K.nonZeros(), 0.0);
-  for (int t = 0; t < mesh_.num_triangles(); ++t) {
-    const P1Triangle& T = geometry_[t];
-    const Matrix2 F = gradient(t, u);
-    const int* slots = &slot_[36 * static_cast<std::size_t>(t)];
-    const Eigen::Matrix4d A = m.moduli(F);
-    // K_(a c),(b d) = |T| Σ_{J,L} A(2c + J, 2d + L) ∂_J λ_a ∂_L λ_b, A ∇λ_b once per (b, d).
-    for (int b = 0; b < 3; ++b)
-      for (int d = 0; d < 2; ++d) {
-        const Eigen::Vector4d Ag = A.middleCols<2>(2 * d) * T.grad.row(b).transpose();
-        for (int a = 0; a < 3; ++a)
-          for (int c = 0; c < 2; ++c) {
-            const int s = slots[6 * local(a, c) + local(b, d)];
-            if (s >= 0) values[s] += T.area * (Ag[2 * c] * T.grad(a, 0) + Ag[2 * c + 1] * T.grad(a, 1));
-          }
-      }
-  }
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e)
+    for (int k = 0; k < per_element_; ++k) {
+      const QuadraturePoint& q = points_of(e)[k];
+      const Eigen::Matrix4d A = m.moduli(gradient(e, q, u));
+      // K_(a c),(b d) = dx Σ_{J,L} A(2c + J, 2d + L) ∂_J N_a ∂_L N_b, A ∇N_b once per (b, d).
+      for (int b = 0; b < nodes_; ++b)
+        for (int d = 0; d < 2; ++d) {
+          const Eigen::Vector4d Ag = A.middleCols<2>(2 * d) * q.grad.row(b).transpose();
+          for (int a = 0; a < nodes_; ++a)
+            for (int c = 0; c < 2; ++c) {
+              const int s = slot(e, a + nodes_ * c, b + nodes_ * d);
+              if (s >= 0) values[s] += q.dx * (Ag[2 * c] * q.grad(a, 0) + Ag[2 * c + 1] * q.grad(a, 1));
+            }
+        }
+    }
 }
 
 }  // namespace fsi

@@ -40,7 +40,8 @@ void ElasticContactSolver::set_material(const Material& material) {
   solver_.refactorise_often = material_.model != MaterialModel::linear;
   solver_.set_operator(A_free_, C_free_);
   if (material_.model != MaterialModel::linear) {
-    assembler_ = std::make_unique<FreeDofAssembler>(mesh_, free_dofs_, A_free_);
+    assembler_ = p2_ ? std::make_unique<FreeDofAssembler>(p2_->space, free_dofs_, A_free_)
+                     : std::make_unique<FreeDofAssembler>(mesh_, free_dofs_, A_free_);
     K_ = A_free_;
   }
 }
@@ -136,7 +137,9 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
 
 // Saint-Venant–Kirchhoff's energy stays finite as J → 0 and beyond: under strong
 // compression Newton can converge to a state with folded triangles, a solution of
-// the equations but not of any body. Said, never returned as an answer.
+// the equations but not of any body. Said, never returned as an answer. With P2 the
+// triangles checked are the nodal mesh's, the deformed shape the fluid and the
+// outputs see.
 void ElasticContactSolver::require_unfolded(const Eigen::VectorXd& u) const {
   int folded = 0;
   for (int t = 0; t < mesh_.num_triangles(); ++t)

@@ -35,9 +35,16 @@ RelinearisedContact solve_relinearised(ElasticContactSolver& solver, const Candi
   Eigen::VectorXd u_k = u_start.size() ? u_start : Eigen::VectorXd::Zero(2 * nv);
   RelinearisedContact r;
   const ContactSolution* warm = nullptr;
+  NewtonReport newton;  // over all linearisations: each one's Newton steps count
   for (int k = 1; k <= options.max_linearisations; ++k) {
     solver.set_constraint(assemble_normal_contact(mesh, candidates, obstacles, u_k));
     r.solution = solver.solve(b_S, warm);
+    newton.steps += r.solution.newton.steps;
+    newton.cuts += r.solution.newton.cuts;
+    newton.load_steps = std::max(newton.load_steps, r.solution.newton.load_steps);
+    newton.residual = r.solution.newton.residual;
+    newton.history.insert(newton.history.end(), r.solution.newton.history.begin(), r.solution.newton.history.end());
+    r.solution.newton = newton;
     if (!r.solution.u.allFinite()) throw SolverFailure("contact.gap = \"normal\": the QP returned a non-finite displacement");
     r.linearisations = k;
     r.min_gap = min_exact_gap(mesh, candidates, obstacles, r.solution.u);

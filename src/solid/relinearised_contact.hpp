@@ -22,7 +22,7 @@
 namespace fsi {
 
 struct RelinearisedContact {
-  ContactSolution solution;
+  ContactSolution solution;  // its `newton`: the steps of all linearisations, their residuals in turn
   int linearisations = 0;  // QPs solved
   double min_gap = 0;      // min d(X + u) over the candidates (m)
   double last_change = 0;  // max nodal |u_{k+1} − u_k| of the last pass (m)
