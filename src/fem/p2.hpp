@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fem/p1.hpp"
+#include "fem/quadrature.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fsi {
@@ -45,5 +46,18 @@ struct P2Values {
   Eigen::Matrix<double, 6, 2> grad;  // row i: ∇N_i
 };
 P2Values p2_values(const P1Triangle& T, const Eigen::Vector3d& lambda);
+
+// kernel(t, element nodes, basis values, position, dx) at every point of `rule` on every
+// triangle: the P2 assemblies' one loop (solid/p2_elasticity, coupling/p2_force).
+template <class Kernel>
+void integrate_p2(const P2Space& space, const TriangleRule& rule, Kernel&& kernel) {
+  const Mesh& mesh = space.mesh();
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const P1Triangle T(mesh, t);
+    for (std::size_t q = 0; q < rule.w.size(); ++q)
+      kernel(t, space.element(t), p2_values(T, rule.lambda[q]), T.point(rule.lambda[q]),
+             rule.w[q] * T.area);
+  }
+}
 
 }  // namespace fsi
