@@ -2,9 +2,23 @@
 
 #include "solid/hyperelastic.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "fem/integration.hpp"
 
 namespace fsi {
+namespace {
+
+// The fields and u must live on the force's space: 2n, n, 2n entries.
+void check_sizes(const SampledFluid& s, const Eigen::VectorXd& u, int n) {
+  if (s.v.size() == 2 * n && s.p.size() == n && u.size() == 2 * n) return;
+  throw std::invalid_argument("FluidForce: the sampled v has " + std::to_string(s.v.size()) + " entries, p " +
+                              std::to_string(s.p.size()) + ", u " + std::to_string(u.size()) + "; the space has " +
+                              std::to_string(n) + " nodes (2n, n, 2n expected)");
+}
+
+}  // namespace
 
 SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
                                          const Eigen::VectorXd& u) {
@@ -65,6 +79,11 @@ Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) 
 
 // Viscous, pressure, penalty and body-force terms of eq. (33).
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
+  check_sizes(s, u, space_ ? space_->num_nodes() : mesh_.num_vertices());
+  if (space_) {  // p2_force.cpp
+    if (model_ == ForceModel::large) return p2_large(s, u);
+    return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + p2_body_force(u);
+  }
   if (model_ == ForceModel::large) return large(s, u);
   return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + body_force(u);
 }

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "fem/p2.hpp"
 #include "fluid/fluid_field.hpp"
 #include "mesh/mesh.hpp"
 #include "solid/elasticity.hpp"
@@ -17,6 +18,7 @@ namespace fsi {
 
 // ṽ, p̃: the fluid fields at the deformed positions X_i + u(X_i) of the structure's
 // vertices (outside D_h: at the nearest point of D_h).
+// For the P2 structure (structure.element = "P2"): at its n nodes, v 2n, p n.
 struct SampledFluid {
   Eigen::VectorXd v;  // 2nv, paper ordering
   Eigen::VectorXd p;  // nv
@@ -40,23 +42,35 @@ class FluidForce {
  public:
   FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F,
              ForceModel model = ForceModel::small);
+  // The same on the P2 space (issue 14, p2_force.cpp): ṽ, p̃ and u P2 fields on the
+  // space's nodes, dof(node, c) = c·n + node, w over the P2 basis. `space` must
+  // outlive the object.
+  FluidForce(const P2Space& space, double mu_F, double eps, const VectorField& f_F,
+             ForceModel model = ForceModel::small);
+  FluidForce(const P2Space&& space, double mu_F, double eps, const VectorField& f_F,
+             ForceModel model = ForceModel::small) = delete;
 
   // The load vector of eq. (33)'s last four terms, for the sampled fields and the
-  // displacement u defining φ.
+  // displacement u defining φ. Throws std::invalid_argument if a size does not match
+  // the space (2n, n, 2n; n the vertices for P1, the nodes for P2).
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
  private:
   // −∫ (f_F∘φ)·w (times J if `jacobian`), φ(X) = X + u(X) at the quadrature points.
   Eigen::VectorXd body_force(const Eigen::VectorXd& u, bool jacobian = false) const;
   Eigen::VectorXd large(const SampledFluid& s, const Eigen::VectorXd& u) const;
+  // The P2 forms (p2_force.cpp).
+  Eigen::VectorXd p2_body_force(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd p2_large(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
   const Mesh& mesh_;
+  const P2Space* space_ = nullptr;  // set for the P2 structure
   double mu_F_;
   double eps_;
   ForceModel model_;
   VectorField f_F_;
   SparseMatrix K_mu_;  // ∫ 2μ_F ε(φ_j):ε(φ_i)
-  SparseMatrix B_;     // ∫ (div φ_i) q_k
+  SparseMatrix B_;     // ∫ (div φ_i) q_k (q_k: P1, or P2 for the P2 space)
   SparseMatrix M_;     // ∫ φ_j·φ_i
 };
 

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "fem/p1.hpp"
+#include "fem/quadrature.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fsi {
@@ -63,5 +64,18 @@ struct OwnedP2Space {
   const Mesh mesh;  // the element mesh (straight-sided triangles)
   const P2Space space;
 };
+
+// kernel(t, element nodes, basis values, position, dx) at every point of `rule` on every
+// triangle: the P2 assemblies' one loop (solid/p2_elasticity, coupling/p2_force).
+template <class Kernel>
+void integrate_p2(const P2Space& space, const TriangleRule& rule, Kernel&& kernel) {
+  const Mesh& mesh = space.mesh();
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const P1Triangle T(mesh, t);
+    for (std::size_t q = 0; q < rule.w.size(); ++q)
+      kernel(t, space.element(t), p2_values(T, rule.lambda[q]), T.point(rule.lambda[q]),
+             rule.w[q] * T.area);
+  }
+}
 
 }  // namespace fsi

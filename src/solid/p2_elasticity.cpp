@@ -10,17 +10,6 @@ namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-// kernel(t, element nodes, basis values, dx) at every point of `rule` on every triangle.
-template <class Kernel>
-void integrate_p2(const P2Space& space, const TriangleRule& rule, Kernel&& kernel) {
-  const Mesh& mesh = space.mesh();
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const P1Triangle T(mesh, t);
-    for (std::size_t q = 0; q < rule.w.size(); ++q)
-      kernel(t, space.element(t), p2_values(T, rule.lambda[q]), T.point(rule.lambda[q]), rule.w[q] * T.area);
-  }
-}
-
 Matrix2 gradient_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& u, int n) {
   Matrix2 F = Matrix2::Identity();
   for (int i = 0; i < 6; ++i)
