@@ -55,12 +55,14 @@ void check_structure_mesh_size(const Case& c, const Origin& o) {
   if (!(s.h <= 10 * s.H))
     fail(o, "structure.h", "= " + shortest(s.h) + " is more than ten times the structure's thickness",
          "(0, 10 * structure.H = " + shortest(10 * s.H) + "] (" + o.value("structure.H", s.H, "structure.h") + ")");
+  // P2 has four times P1's nodes on the same mesh: its limit is a quarter of the triangles.
+  const double per = s.element == "P2" ? 4 : 1, limit = case_limits().structure_triangles / per;
   const double estimate = std::max(2.4 * s.L * s.H / (s.h * s.h), 2.0 * s.L / s.h);
-  if (estimate > case_limits().structure_triangles)
+  if (estimate > limit)
     fail(o, "structure.h", "= " + shortest(s.h) + " would need about " + approx(estimate) +
                                " triangles for structure.L x structure.H = " + shortest(s.L) + " x " + shortest(s.H) +
-                               ", above the limit of " + shortest(case_limits().structure_triangles),
-         ">= " + approx(std::sqrt(2.4 * s.L * s.H / case_limits().structure_triangles)) + " for this structure");
+                               ", above the limit of " + shortest(limit) + (per > 1 ? " for P2 elements" : ""),
+         ">= " + approx(std::sqrt(2.4 * s.L * s.H / limit)) + " for this structure");
 }
 
 void check_rectangle_against_obstacle(const Case& c, const Origin& o) {

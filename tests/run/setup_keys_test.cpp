@@ -25,7 +25,7 @@ std::string other_value(const std::string& key) {
       {"fluid.method", "body-fitted"}, {"coupling.eps_rule", "h^2"}, {"contact.gap", "normal"},
       {"contact.boundary", "all"}, {"fluid.left", "outflow"}, {"fluid.bottom", "wall"},
       {"fluid.right", "outflow"}, {"fluid.top", "wall"}, {"output.probes", "[[0.1, 0.01]]"},
-      {"structure.model", "neo-hookean"}, {"coupling.force", "large"}};
+      {"structure.model", "neo-hookean"}, {"coupling.force", "large"}, {"structure.element", "P2"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
