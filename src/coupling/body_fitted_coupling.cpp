@@ -45,6 +45,7 @@ class BodyFittedMap final : public CoupledMap {
                                              "): contact cannot be body-fitted; fluid.method = \"body-fitted\" is a "
                                              "check for configurations without contact (use \"penalised\")");
     value.fluid_load = fluid.load;
+    value.load = b_S;
     last_ = std::move(fluid);
     rec.newton_steps = value.structure.newton.steps;
     rec.t_structure = clock.elapsed();

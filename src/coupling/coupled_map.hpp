@@ -16,6 +16,7 @@ namespace fsi {
 struct MapValue {
   ContactSolution structure;   // ũ^{k+1} (finite)
   Eigen::VectorXd fluid_load;  // eq. (33)'s fluid terms (or the body-fitted load) that gave it
+  Eigen::VectorXd load;        // the whole b_S that gave it (empty: the map keeps none)
 };
 
 class CoupledMap {

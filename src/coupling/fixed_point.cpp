@@ -51,6 +51,7 @@ CouplingResult FixedPointCoupling::run() {
   FixedPointLoop loop(H, relaxation_, M_, tol_, max_iterations_);
   loop.progress = progress;
   loop.observe = observe;
+  loop.inexact_fraction = inexact_fraction;
   return loop.run(initial);
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "coupling/coupling_result.hpp"
+#include "coupling/fixed_point_loop.hpp"
 #include "coupling/penalised_map.hpp"
 #include "coupling/relaxation.hpp"
 
@@ -32,6 +33,7 @@ class FixedPointCoupling {
   // restart from another scheme's end state tells whether that state is a fixed
   // point for this scheme too (study/converge.cpp).
   Eigen::VectorXd initial;
+  double inexact_fraction = kInexactNewtonFraction;  // FixedPointLoop's (0: exact Newton every pass)
 
   // Never throws for a failed solve: it stops, keeps the last good state and says
   // why in CouplingResult::failure (a SolverFailure or QpError in a phase, memory

@@ -57,6 +57,7 @@ MapValue PenalisedMap::operator()(const Eigen::VectorXd& u, int k, const Contact
     });
     if (!value.structure.u.allFinite()) fail("the contact QP", k, "non-finite displacement");
     value.fluid_load = b_S - p_.b_applied;
+    value.load = std::move(b_S);
     rec.newton_steps = value.structure.newton.steps;
     rec.t_structure = clock.elapsed();
   }

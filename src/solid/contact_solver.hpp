@@ -58,6 +58,10 @@ class ElasticContactSolver {
   const Material& material() const { return material_; }
   double newton_tol = 1e-10;
   int newton_max_steps = 30;
+  // An inexact solve (the coupling's early passes): Newton also stops once a step moves
+  // no node by more than this (m), the size of the error it corrects and an upper
+  // bound of the error left (quadratic convergence). 0: off, the residual alone decides.
+  double newton_step_tol = 0;
 
   // min ½uᵀA_S u − b_Sᵀu s.t. C_S u ≥ c_lb (linear); the nonlinear equilibrium
   // f_int(u) = b_S + C_Sᵀα with the same constraint (another material). `warm`: an

@@ -4,7 +4,8 @@
 // r(u) = f_int(u) − b, is the linearised equilibrium K_T δ + r = Cᵀα with the
 // contact's complementarity kept exactly in every step (the active set found by the
 // QP, warm-started from the step before). The iteration stops when the nonlinear
-// equilibrium's relative residual ‖f_int(u) − b − Cᵀα‖∞ / scale ≤ newton_tol.
+// equilibrium's relative residual ‖f_int(u) − b − Cᵀα‖∞ / scale ≤ newton_tol, or, in
+// an inexact solve, when a step moves no node by more than newton_step_tol.
 // A step that folds a triangle or does not reduce that residual is halved (a
 // feasible point: x_k and x_{k+1} both satisfy the linear constraint); if Newton
 // still fails, the load is applied in 2, 4, ... 64 increments.
@@ -122,6 +123,8 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
     }
     report.cuts += cut;
     if (!std::isfinite(r_new)) return false;
+    // The full step's size (a halved one says nothing of the error left).
+    const double full_step = cut == 0 ? (qp.x - x_k).lpNorm<Eigen::Infinity>() : INFINITY;
     u = u_new;
     f = f_new;
     qp.x = u(free_dofs_);
@@ -129,7 +132,7 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
     state.qp = std::move(qp);
     report.history.push_back(r_new);
     report.residual = r_new;
-    if (r_new <= newton_tol) return true;
+    if (r_new <= newton_tol || full_step <= newton_step_tol) return true;
     r_prev = r_new;
   }
   return false;
