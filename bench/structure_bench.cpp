@@ -83,11 +83,12 @@ void BM_QpIpopt(benchmark::State& state) { BM_Qp(state, "ipopt"); }
 // A coupled pass's structure solve (SPEC §11: a hyperelastic pass may cost at most 3×
 // a linear one): the load alternates between b and 1.02 b, each solve warm-started
 // from the other's solution, as consecutive fixed-point passes are. range(1): the
-// model, 0 linear, 1 Saint-Venant–Kirchhoff, 2 neo-Hookean.
+// model, 0 linear, 1 Saint-Venant–Kirchhoff, 2 neo-Hookean; range(2): 0 P1, 1 P2.
 void BM_StructurePass(benchmark::State& state) {
   Case c = beam_case(state);
   const char* models[] = {"linear", "saint-venant-kirchhoff", "neo-hookean"};
   c.structure.model = models[state.range(1)];
+  c.structure.element = state.range(2) ? "P2" : "P1";
   const Mesh mesh = make_structure_mesh(c);
   StructureSetup s = make_structure(c, mesh, nullptr);
   const Eigen::VectorXd loads[2] = {s.b_applied, 1.02 * s.b_applied};
@@ -99,11 +100,14 @@ void BM_StructurePass(benchmark::State& state) {
     benchmark::DoNotOptimize(last[k].u.data());
     k = 1 - k;
   }
-  mesh_counters(state, mesh, s.solver->contact().C_S.rows());
+  mesh_counters(state, s.mesh(), s.solver->contact().C_S.rows());  // P2: its nodal mesh's
   state.counters["newton_steps"] = steps;
 }
 
-BENCHMARK(BM_StructurePass)->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->ArgNames({"hS_level", "model"})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StructurePass)
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}, {0, 1}})
+    ->ArgNames({"hS_level", "model", "P2"})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AssembleA_S)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AssembleC_S)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolverSetup)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);

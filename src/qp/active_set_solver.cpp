@@ -31,12 +31,11 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
   bool ok = false;
   if (refactorise_often) {
     cholesky_.reset();
-    if (!(same_pattern && simplicial_)) {
-      simplicial_ = std::make_unique<Eigen::SimplicialLLT<SparseMatrix>>();
-      simplicial_->analyzePattern(A_);
+    if (!(same_pattern && simplicial_ && simplicial_->fits(A_, C))) {
+      simplicial_ = std::make_unique<BoundaryLastCholesky>();
+      simplicial_->analyse(A_, C);
     }
-    simplicial_->factorize(A_);
-    ok = simplicial_->info() == Eigen::Success;
+    ok = simplicial_->factorize(A_);
   } else {
     simplicial_.reset();
     if (same_pattern && cholesky_) {
@@ -58,7 +57,20 @@ void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
   if (C.cols() != A_.rows()) throw QpError("active-set: constraint and operator sizes do not match");
   require_finite(C, "active-set", "the constraint matrix C_S");
   C_ = C;
-  // S = C A⁻¹ Cᵀ by blocks of columns, so A⁻¹Cᵀ is never stored whole.
+  const Eigen::Index m = C_.rows();
+  if (simplicial_ && simplicial_->touches_only_constrained(C_)) {
+    S_ = simplicial_->schur(C_);  // from the factor's trailing block (boundary_last_cholesky.hpp)
+  } else {
+    compute_schur_by_solves();
+  }
+  S_ = 0.5 * (S_ + S_.transpose()).eval();  // symmetric to round-off
+  kappa_ = S_.diagonal().cwiseInverse();
+  if (m > 0 && !(S_.diagonal().minCoeff() > 0))
+    throw QpError("active-set: a contact row has no free degree of freedom");
+}
+
+// S = C A⁻¹ Cᵀ by blocks of columns, so A⁻¹Cᵀ is never stored whole.
+void ActiveSetSolver::compute_schur_by_solves() {
   const Eigen::Index m = C_.rows();
   S_.resize(m, m);
   const SparseMatrix Ct = C_.transpose();
@@ -69,10 +81,6 @@ void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
     const Eigen::MatrixXd Z = solve_A<Eigen::MatrixXd>(rhs);
     S_.middleCols(j0, nb) = C_ * Z;
   }
-  S_ = 0.5 * (S_ + S_.transpose()).eval();  // symmetric to round-off
-  kappa_ = S_.diagonal().cwiseInverse();
-  if (m > 0 && !(S_.diagonal().minCoeff() > 0))
-    throw QpError("active-set: a contact row has no free degree of freedom");
 }
 
 Eigen::VectorXd ActiveSetSolver::solve_active(const std::vector<bool>& active,

@@ -18,6 +18,7 @@
 #include <Eigen/SparseCholesky>
 #include <memory>
 
+#include "qp/boundary_last_cholesky.hpp"
 #include "qp/qp_problem.hpp"
 
 namespace fsi {
@@ -37,17 +38,18 @@ class ActiveSetSolver final : public QpSolver {
  private:
   Eigen::VectorXd solve_active(const std::vector<bool>& active, const Eigen::VectorXd& d) const;
   Eigen::VectorXd lawson_hanson(const Eigen::VectorXd& d, int& iterations) const;
+  void compute_schur_by_solves();
 
   SparseMatrix A_, C_;
   // LLᵀ, not CHOLMOD's automatic choice: its LDLᵀ accepts negative pivots, and A_S
   // must be positive definite.
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> cholesky_;
-  std::unique_ptr<Eigen::SimplicialLLT<SparseMatrix>> simplicial_;  // refactorise_often
+  std::unique_ptr<BoundaryLastCholesky> simplicial_;  // refactorise_often
   bool factorised() const { return cholesky_ || simplicial_; }
   // A⁻¹ rhs by whichever factorisation is in use.
   template <class Plain>
   Plain solve_A(const Plain& rhs) const {
-    return simplicial_ ? Plain(simplicial_->solve(rhs)) : Plain(cholesky_->solve(rhs));
+    return simplicial_ ? Plain(simplicial_->solve(Plain(rhs))) : Plain(cholesky_->solve(rhs));
   }
   Eigen::MatrixXd S_;
   Eigen::VectorXd kappa_;

@@ -39,11 +39,13 @@ class FreeDofAssembler {
     double dx;
   };
   void index_slots(const std::vector<int>& free_dofs, const SparseMatrix& pattern);
+  template <int N>
   Matrix2 gradient(int e, const QuadraturePoint& q, const Eigen::VectorXd& u) const;
+  template <int N>
+  Eigen::VectorXd force_of(const Material& m, const Eigen::VectorXd& u) const;
+  template <int N>
+  void tangent_of(const Material& m, const Eigen::VectorXd& u, SparseMatrix& K) const;
   const QuadraturePoint* points_of(int e) const { return &points_[static_cast<std::size_t>(e * per_element_)]; }
-  int slot(int e, int i, int j) const {  // i, j: local dofs a + nodes_·c
-    return slot_[static_cast<std::size_t>(e) * 4 * nodes_ * nodes_ + static_cast<std::size_t>(2 * nodes_ * i + j)];
-  }
 
   int nodes_ = 3;         // per element
   int per_element_ = 1;   // quadrature points per element
@@ -51,7 +53,7 @@ class FreeDofAssembler {
   std::vector<std::array<int, 6>> elements_;
   std::vector<QuadraturePoint> points_;
   std::vector<int> reduced_;  // dof → reduced index, −1 if fixed
-  std::vector<int> slot_;     // (2 nodes_)² per element: (a c, b d) → position in K's values, −1 if fixed
+  std::vector<int> slot_;     // (2 nodes_)² per element: (a + nodes_ c, b + nodes_ d) → position in K's values, −1 if fixed
 };
 
 }  // namespace fsi

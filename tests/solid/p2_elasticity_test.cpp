@@ -17,6 +17,7 @@
 #include "qp/active_set_solver.hpp"
 #include "solid/contact_solver.hpp"
 #include "solid/p2_elasticity.hpp"
+#include "support/newton_order.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi {
@@ -172,17 +173,6 @@ MmsResult solve_mms(const P2Space& space, const Material& m) {
   return {p2_errors(space, s.u, exact, gradient), s.newton};
 }
 
-// Quadratic near the solution: the observed order log(r_{k+1}/r_k) / log(r_k/r_{k-1})
-// on the last triple of residuals above 1e-14 (the backward error's floor ~1e-16).
-void expect_quadratic(const std::vector<double>& r) {
-  int last = -1;
-  for (std::size_t k = 2; k < r.size(); ++k)
-    if (r[k] > 1e-14) last = static_cast<int>(k);
-  ASSERT_GE(last, 2) << "too few steps above round-off to see an order";
-  const double order = std::log(r[last] / r[last - 1]) / std::log(r[last - 1] / r[last - 2]);
-  EXPECT_GE(order, 1.8) << r[last - 2] << " -> " << r[last - 1] << " -> " << r[last];
-}
-
 TEST(P2Elasticity, ManufacturedSolutionsConvergeAtTheP2RatesWithQuadraticNewton) {
   for (MaterialModel model : {MaterialModel::linear, MaterialModel::saint_venant_kirchhoff, MaterialModel::neo_hookean}) {
     std::vector<double> l2, h1;
@@ -202,7 +192,7 @@ TEST(P2Elasticity, ManufacturedSolutionsConvergeAtTheP2RatesWithQuadraticNewton)
     }
     if (model == MaterialModel::linear) continue;
     for (double x : finest.history) std::printf("  newton residual %.3e\n", x);
-    expect_quadratic(finest.history);
+    testing::expect_quadratic(finest.history);
     EXPECT_LE(finest.residual, 1e-10);
     EXPECT_EQ(finest.load_steps, 1);
   }
