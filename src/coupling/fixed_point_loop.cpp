@@ -10,6 +10,7 @@
 #include "coupling/phase_guard.hpp"
 
 namespace fsi {
+
 FixedPointLoop::FixedPointLoop(CoupledMap& H, Relaxation& relaxation, const SparseMatrix& M, double tol,
                                int max_iterations)
     : H_(H), relaxation_(relaxation), M_(M), tol_(tol), max_iterations_(max_iterations) {

@@ -80,12 +80,8 @@ Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) 
 // Viscous, pressure, penalty and body-force terms of eq. (33).
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
   check_sizes(s, u, space_ ? space_->num_nodes() : mesh_.num_vertices());
-  if (space_) {  // p2_force.cpp
-    if (model_ == ForceModel::large) return p2_large(s, u);
-    return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + p2_body_force(u);
-  }
-  if (model_ == ForceModel::large) return large(s, u);
-  return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + body_force(u);
+  if (model_ == ForceModel::large) return space_ ? p2_large(s, u) : large(s, u);  // P2: p2_force.cpp
+  return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + (space_ ? p2_body_force(u) : body_force(u));
 }
 
 }  // namespace fsi

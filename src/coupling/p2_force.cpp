@@ -63,23 +63,6 @@ SparseMatrix p2_vector_mass(const P2Space& space) {
   return M;
 }
 
-// A P2 vector field (2n, dof(node, c) = c·n + node) at a point: value and gradient
-// (row c = ∇w_c).
-struct VectorAtPoint {
-  Point value = Point::Zero();
-  Matrix2 grad = Matrix2::Zero();
-};
-VectorAtPoint vector_at(const std::array<int, 6>& nodes, const P2Values& v,
-                        const Eigen::VectorXd& w, int n) {
-  VectorAtPoint out;
-  for (int i = 0; i < 6; ++i)
-    for (int c = 0; c < 2; ++c) {
-      out.value[c] += w[dof(nodes[i], c, n)] * v.N[i];
-      out.grad.row(c) += w[dof(nodes[i], c, n)] * v.grad.row(i);
-    }
-  return out;
-}
-
 double scalar_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& q) {
   double out = 0;
   for (int i = 0; i < 6; ++i) out += q[nodes[i]] * v.N[i];
@@ -108,7 +91,7 @@ Eigen::VectorXd FluidForce::p2_body_force(const Eigen::VectorXd& u) const {
   integrate_p2(
       *space_, triangle_rule(4),
       [&](int, const std::array<int, 6>& nodes, const P2Values& v, const Point& X, double dx) {
-        const Point f = f_F_(X + vector_at(nodes, v, u, n).value) * dx;
+        const Point f = f_F_(X + p2_vector_at(nodes, v, u, n).value) * dx;
         for (int a = 0; a < 6; ++a)
           for (int c = 0; c < 2; ++c) body[dof(nodes[a], c, n)] -= f[c] * v.N[a];
       });
@@ -123,8 +106,8 @@ Eigen::VectorXd FluidForce::p2_large(const SampledFluid& s, const Eigen::VectorX
   integrate_p2(
       *space_, triangle_rule(kLargeDegree),
       [&](int, const std::array<int, 6>& nodes, const P2Values& v, const Point& X, double dx) {
-        const VectorAtPoint disp = vector_at(nodes, v, u, n);
-        const VectorAtPoint vel = vector_at(nodes, v, s.v, n);
+        const P2VectorAt disp = p2_vector_at(nodes, v, u, n);
+        const P2VectorAt vel = p2_vector_at(nodes, v, s.v, n);
         const Matrix2 F = Matrix2::Identity() + disp.grad;
         const double J = F.determinant();
         const Matrix2 Finv = F.inverse();

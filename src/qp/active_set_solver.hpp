@@ -49,7 +49,7 @@ class ActiveSetSolver final : public QpSolver {
   // A⁻¹ rhs by whichever factorisation is in use.
   template <class Plain>
   Plain solve_A(const Plain& rhs) const {
-    return simplicial_ ? Plain(simplicial_->solve(Plain(rhs))) : Plain(cholesky_->solve(rhs));
+    return simplicial_ ? simplicial_->solve(rhs) : Plain(cholesky_->solve(rhs));
   }
   Eigen::MatrixXd S_;
   Eigen::VectorXd kappa_;

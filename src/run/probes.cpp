@@ -1,6 +1,7 @@
 #include "run/probes.hpp"
 
 #include "fem/point_locator.hpp"
+#include "solid/p2_elasticity.hpp"
 
 namespace fsi {
 
@@ -8,14 +9,8 @@ namespace {
 
 // The P2 interpolant of u at a point located in p2's element mesh.
 Point interpolate(const P2Space& p2, const Eigen::VectorXd& u, const Location& at) {
-  const int n = p2.num_nodes();
   const P2Values v = p2_values(P1Triangle(p2.mesh(), at.triangle), at.lambda);
-  Point d(0, 0);
-  for (int a = 0; a < 6; ++a) {
-    const int node = p2.element(at.triangle)[a];
-    d += v.N[a] * Point(u[node], u[n + node]);
-  }
-  return d;
+  return p2_vector_at(p2.element(at.triangle), v, u, p2.num_nodes()).value;
 }
 
 // The P1 interpolant of u at a located point (or P2's, with p2).

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fem/p1.hpp"
+#include "solid/p2_elasticity.hpp"
 
 namespace fsi {
 
@@ -36,14 +37,10 @@ Eigen::VectorXd von_mises(const Mesh& mesh, const Lame& lame, const Eigen::Vecto
 
 Eigen::VectorXd von_mises(const P2Space& space, const Lame& lame, const Eigen::VectorXd& u) {
   const Mesh& mesh = space.mesh();
-  const int n = space.num_nodes();
   Eigen::VectorXd out(mesh.num_triangles());
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const P2Values v = p2_values(P1Triangle(mesh, t), Eigen::Vector3d::Constant(1.0 / 3));
-    Eigen::Matrix2d grad_u = Eigen::Matrix2d::Zero();
-    for (int a = 0; a < 6; ++a)
-      for (int c = 0; c < 2; ++c) grad_u.row(c) += u[dof(space.element(t)[a], c, n)] * v.grad.row(a);
-    out[t] = von_mises_of(lame, grad_u);
+    out[t] = von_mises_of(lame, p2_vector_at(space.element(t), v, u, space.num_nodes()).grad);
   }
   return out;
 }
