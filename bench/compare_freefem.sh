@@ -4,8 +4,10 @@
 # P1b/P1 + UMFPACK, IPOPT through ff-Ipopt, as the paper's author did), each under
 # /usr/bin/time -v, and prints a markdown table: iterations k and ||v||/eps (paper / ours
 # / FreeFem++), wall time, speed-up, peak memory and mesh sizes. Also writes DIR/compare.csv.
+# Each fsicontact run is one process that meshes, solves and writes its PNG figures and
+# VTU files, as a user's run does (--no-outputs: summary.json and history.csv only).
 #
-#   bench/compare_freefem.sh [--rows 1,2,...] [--out DIR] [--same-mesh] [--report-only]
+#   bench/compare_freefem.sh [--rows 1,2,...] [--out DIR] [--same-mesh] [--no-outputs] [--report-only]
 #
 #   --rows       only these rows (1-based, in the order of cases/table1.csv)
 #   --out        output directory (default out/compare-freefem)
@@ -23,15 +25,16 @@ ROOT=$PWD
 BIN=${FSICONTACT:-build/app/fsicontact}
 FREEFEM=${FREEFEM:-FreeFem++}
 export FF_LOADPATH=${FF_LOADPATH:-/usr/lib/freefem++}
-ROWS="" OUT=out/compare-freefem SAME_MESH=0 REPORT_ONLY=0
-usage() { echo "usage: $0 [--rows 1,2,...] [--out DIR] [--same-mesh] [--report-only]" >&2; exit 2; }
+ROWS="" OUT=out/compare-freefem SAME_MESH=0 REPORT_ONLY=0 OUTPUTS=true
+usage() { echo "usage: $0 [--rows 1,2,...] [--out DIR] [--same-mesh] [--no-outputs] [--report-only]" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --rows) [[ $# -ge 2 ]] || usage; ROWS=$2; shift 2 ;;
     --out) [[ $# -ge 2 ]] || usage; OUT=$2; shift 2 ;;
     --same-mesh) SAME_MESH=1; shift ;;
+    --no-outputs) OUTPUTS=false; shift ;;
     --report-only) REPORT_ONLY=1; shift ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
     *) usage ;;
   esac
 done
@@ -65,7 +68,7 @@ if [[ $REPORT_ONLY -eq 0 ]]; then
     # (a) ours
     /usr/bin/time -v -o "$OUT/ours-row-$nn.time" "$BIN" run cases/paper-7.2.toml -q \
       --set coupling.eps="$eps" --set coupling.omega="$omega" --set fluid.h="$hF" --set structure.h="$hS" \
-      --set output.png=false --set output.vtu=false --out "$OUT/ours-row-$nn" \
+      --set output.png=$OUTPUTS --set output.vtu=$OUTPUTS --out "$OUT/ours-row-$nn" \
       > "$OUT/ours-row-$nn.log" 2>&1
     echo "  ours: exit $? ($(tail -c 300 "$OUT/ours-row-$nn.log" | tr '\n' ' ' | cut -c1-160))" >&2
     # (b) FreeFem++ (run inside OUT: IPOPT reads an ipopt.opt from the working directory)

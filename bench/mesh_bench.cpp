@@ -1,16 +1,22 @@
-// Meshing the paper's §7.2 box (SPEC §7.2; issue 12's meshing target): Gmsh's 2D
-// algorithms on the same geometry in this process (1 MeshAdapt, 5 Delaunay, 6
-// Frontal-Delaunay, the program's choice), and the program's whole path
-// generate_fluid_mesh (a forked child, the transfer, build and validation), uniform
-// and with the band refinement of fluid.h_near. docs/performance.md gives the numbers.
-//   build/bench/mesh_bench --benchmark_filter='gmsh_algorithm/.*' --benchmark_min_time=1
+// Meshing the paper's §7.2 box (SPEC §7.2; issues 12 and 15): Gmsh's 2D algorithms on
+// the same geometry in this process (1 MeshAdapt, 5 Delaunay, 6 Frontal-Delaunay),
+// CGAL's Delaunay refinement alone (from the boundary, no lattice), and the
+// program's whole paths generate_fluid_mesh with the lattice generator (the default)
+// and with Gmsh (a forked child, the transfer, build and validation), uniform and
+// with the band refinement of fluid.h_near. Each reports triangles, µs a triangle
+// and the smallest angle. docs/performance.md ("Meshing") gives the numbers.
+//   build/bench/mesh_bench --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 #include <gmsh.h>
 
 #include <chrono>
+#include <map>
 #include <utility>
 
+#include "mesh/constrained_delaunay.hpp"
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "mesh/planar_domain.hpp"
 
 namespace fsi {
 namespace {
@@ -52,6 +58,25 @@ std::size_t gmsh_box(int algorithm, double h, int smoothing, double h_near) {
   return tags.empty() ? 0 : tags[0].size();
 }
 
+// The smallest angle of Gmsh's current 2D mesh, in degrees.
+double gmsh_min_angle() {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(node_tags, xyz, parametric, -1, -1, true, false);
+  Mesh m;
+  std::map<std::size_t, int> index;
+  for (std::size_t i = 0; i < node_tags.size(); ++i) {
+    if (index.emplace(node_tags[i], m.num_vertices()).second)
+      m.vertices.emplace_back(xyz[3 * i], xyz[3 * i + 1]);
+  }
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, 2);
+  for (std::size_t k = 0; k + 2 < nodes[0].size(); k += 3)
+    m.triangles.push_back({index[nodes[0][k]], index[nodes[0][k + 1]], index[nodes[0][k + 2]]});
+  return statistics(m).min_angle_deg;
+}
+
 void gmsh_algorithm(benchmark::State& state) {
   static bool initialised = false;
   if (!initialised) gmsh::initialize(0, nullptr, false), initialised = true;
@@ -69,6 +94,7 @@ void gmsh_algorithm(benchmark::State& state) {
   }
   state.counters["triangles"] = static_cast<double>(triangles);
   state.counters["us_per_triangle"] = 1e6 * seconds / static_cast<double>(state.iterations()) / static_cast<double>(triangles);
+  state.counters["min_angle"] = gmsh_min_angle();
 }
 // (algorithm, 1/h, smoothing passes, 1/h_near or 0 for a uniform mesh)
 BENCHMARK(gmsh_algorithm)
@@ -77,22 +103,58 @@ BENCHMARK(gmsh_algorithm)
     ->ArgsProduct({{5, 6}, {100}, {0, 1}, {1000, 2000}})
     ->Unit(benchmark::kMillisecond);
 
-// The program's path: fork, Gmsh, transfer, build_mesh, orient_and_validate.
-void generate_fluid(benchmark::State& state) {
-  FluidGeometry g{0.41, 0.5, 0.5, 0.2, -0.07, 0.05, 1.0 / static_cast<double>(state.range(0))};
-  if (state.range(1) > 0) g.h_near = 1.0 / static_cast<double>(state.range(1)), g.band = {0, -0.06, 0.33, 0.05};
-  int triangles = 0;
+// CGAL's 2D mesher alone (Delaunay refinement, angles ≥ 20.7°, edges ≤ 1.4 h as the
+// lattice generator asks of it), from the box's boundary cut at h: what the generator
+// would cost without its lattice.
+void cgal_refinement(benchmark::State& state) {
+  const double h = 1.0 / static_cast<double>(state.range(0));
+  PlanarDomain d{{}, {"box", "disk"}};
+  d.loops.push_back({{{0, -0.5}, {0.41, -0.5}},
+                     {{0.41, -0.5}, {0.41, 0.5}},
+                     {{0.41, 0.5}, {0, 0.5}},
+                     {{0, 0.5}, {0, -0.5}}});
+  BoundaryPiece disk;
+  disk.c = Point(0.2, -0.07), disk.r = 0.05, disk.label = 1;
+  d.loops.push_back({disk});
+  const BoundarySegments b = cut_boundary(d, SizeField{h});
+  Mesh m;
   double seconds = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    triangles = generate_fluid_mesh(g).num_triangles();
+    DelaunayMesh dm = constrained_delaunay({b.points, b.segments, {}}, SizeField{h}, 1.4);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m.vertices = std::move(dm.vertices), m.triangles = std::move(dm.triangles);
+  }
+  state.counters["triangles"] = m.num_triangles();
+  state.counters["us_per_triangle"] =
+      1e6 * seconds / static_cast<double>(state.iterations()) / m.num_triangles();
+  state.counters["min_angle"] = statistics(m).min_angle_deg;
+}
+BENCHMARK(cgal_refinement)->Arg(100)->Arg(400)->Unit(benchmark::kMillisecond);
+
+// The program's paths: generate_fluid_mesh with the lattice generator (in process)
+// and with Gmsh (fork, Gmsh, transfer, build_mesh, orient_and_validate).
+void generate_fluid(benchmark::State& state) {
+  FluidGeometry g{0.41, 0.5, 0.5, 0.2, -0.07, 0.05, 1.0 / static_cast<double>(state.range(0))};
+  if (state.range(1) > 0) g.h_near = 1.0 / static_cast<double>(state.range(1)), g.band = {0, -0.06, 0.33, 0.05};
+  const MeshGenerator by = state.range(2) ? MeshGenerator::gmsh : MeshGenerator::lattice;
+  Mesh m;
+  double seconds = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    m = generate_fluid_mesh(g, by);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  state.counters["triangles"] = triangles;
-  state.counters["us_per_triangle"] = 1e6 * seconds / static_cast<double>(state.iterations()) / triangles;
+  state.counters["triangles"] = m.num_triangles();
+  state.counters["us_per_triangle"] =
+      1e6 * seconds / static_cast<double>(state.iterations()) / m.num_triangles();
+  state.counters["min_angle"] = statistics(m).min_angle_deg;
 }
-// (1/hF, 1/h_near or 0)
-BENCHMARK(generate_fluid)->Args({400, 0})->Args({100, 1000})->Args({100, 2000})->Unit(benchmark::kMillisecond);
+// (1/hF, 1/h_near or 0, 0 lattice | 1 Gmsh)
+BENCHMARK(generate_fluid)
+    ->ArgsProduct({{100, 400, 800}, {0}, {0, 1}})
+    ->ArgsProduct({{100}, {1000, 2000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace fsi

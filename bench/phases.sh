@@ -1,26 +1,31 @@
 #!/usr/bin/env bash
-# Where the time of a whole coupled run goes (docs/performance.md, "The coupling"):
-# runs rows of the paper's Table 1 (cases/table1.csv; no PNG, no VTU) and, with --demo,
-# `make demo`'s run (cases/paper-7.2.toml with its PNG and VTU outputs), each N times
-# under /usr/bin/time -v, and prints per run the medians over the repetitions of: wall
-# time and peak resident memory, and the phases of summary.json (timing_s, fluid.*)
-# and history.csv.
-#   bench/phases.sh [--rows 2,7,8,9] [--repeats N] [--demo] [--out DIR] [--report-only]
-# FSICONTACT names the binary (default build/app/fsicontact). Repetitions interleave the
-# rows (row a, row b, ..., then again), so a slow spell of the machine hits all of them.
+# Where the time of a whole coupled run goes (docs/performance.md, "The coupling",
+# "What every run pays"): runs rows of the paper's Table 1 (cases/table1.csv; no PNG,
+# no VTU unless --outputs) and, with --demo, `make demo`'s run (cases/paper-7.2.toml
+# with its PNG and VTU outputs), each N times under /usr/bin/time -v, and prints per run
+# the medians over the repetitions of: wall time and peak resident memory, and the
+# phases of summary.json (timing_s, fluid.*) and history.csv.
+#   bench/phases.sh [--rows 2,7,8,9] [--repeats N] [--demo] [--outputs] [--before BIN]
+#                   [--out DIR] [--report-only]
+# FSICONTACT names the binary (default build/app/fsicontact); --before another (an
+# earlier build), run beside it on the same rows, its columns marked "before".
+# Repetitions interleave the rows and the binaries (row a, row b, ..., then again), so
+# a slow spell of the machine hits all of them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BIN=${FSICONTACT:-build/app/fsicontact}
-ROWS=2 REPEATS=5 DEMO=0 OUT=out/bench-phases REPORT_ONLY=0
-usage() { echo "usage: $0 [--rows 2,7,...] [--repeats N] [--demo] [--out DIR] [--report-only]" >&2; exit 2; }
+ROWS=2 REPEATS=5 DEMO=0 OUT=out/bench-phases REPORT_ONLY=0 OUTPUTS=false BEFORE=""
+usage() { echo "usage: $0 [--rows 2,7,...] [--repeats N] [--demo] [--outputs] [--before BIN] [--out DIR] [--report-only]" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --rows) [[ $# -ge 2 ]] || usage; ROWS=$2; shift 2 ;;
     --repeats) [[ $# -ge 2 ]] || usage; REPEATS=$2; shift 2 ;;
     --demo) DEMO=1; shift ;;
+    --outputs) OUTPUTS=true; shift ;;
+    --before) [[ $# -ge 2 ]] || usage; BEFORE=$2; shift 2 ;;
     --out) [[ $# -ge 2 ]] || usage; OUT=$2; shift 2 ;;
     --report-only) REPORT_ONLY=1; shift ;;
-    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) usage ;;
   esac
 done
@@ -28,6 +33,7 @@ mkdir -p "$OUT"
 
 if [[ $REPORT_ONLY -eq 0 ]]; then
   [[ -x $BIN ]] || { echo "phases.sh: build first; no $BIN" >&2; exit 2; }
+  [[ -z $BEFORE || -x $BEFORE ]] || { echo "phases.sh: no binary at --before $BEFORE" >&2; exit 2; }
   [[ -x /usr/bin/time ]] || { echo "phases.sh: needs /usr/bin/time (Debian package time)" >&2; exit 2; }
   mapfile -t table < <(grep -v '^#' cases/table1.csv | tail -n +2)
   for r in $(seq 1 "$REPEATS"); do
@@ -36,13 +42,17 @@ if [[ $REPORT_ONLY -eq 0 ]]; then
     fi
     for n in ${ROWS//,/ }; do
       IFS=, read -r eps omega hF hS _ <<< "${table[$((n - 1))]}"
-      dir="$OUT/row-$(printf %02d "$n")-r$r"
-      set +e
-      /usr/bin/time -v -o "$dir.time" "$BIN" run cases/paper-7.2.toml -q \
-        --set coupling.eps="$eps" --set coupling.omega="$omega" --set fluid.h="$hF" --set structure.h="$hS" \
-        --set output.png=false --set output.vtu=false --out "$dir" > /dev/null 2> "$dir.err"
-      echo "row $n repeat $r: exit $?" >&2
-      set -e
+      for which in after before; do
+        [[ $which == after ]] && bin=$BIN prefix=row || bin=$BEFORE prefix=before-row
+        [[ -n $bin ]] || continue
+        dir="$OUT/$prefix-$(printf %02d "$n")-r$r"
+        set +e
+        /usr/bin/time -v -o "$dir.time" "$bin" run cases/paper-7.2.toml -q \
+          --set coupling.eps="$eps" --set coupling.omega="$omega" --set fluid.h="$hF" --set structure.h="$hS" \
+          --set output.png=$OUTPUTS --set output.vtu=$OUTPUTS --out "$dir" > /dev/null 2> "$dir.err"
+        echo "$prefix $n repeat $r: exit $?" >&2
+        set -e
+      done
     done
   done
 fi
@@ -85,6 +95,7 @@ if demo:
     runs.append(("demo", "demo"))
 for n in rows:
     runs.append((f"row {n}", f"row-{int(n):02d}"))
+    runs.append((f"row {n} before", f"before-row-{int(n):02d}"))
 med = {}
 for name, prefix in runs:
     reps = []
@@ -121,7 +132,7 @@ print("| wall time (s), min–max | " + " | ".join(f"{med[n]['wall']:.2f} ({med[
                                             for n in names) + " |")
 row("peak memory (MB)", "peak", "{:.0f}")
 row("timing_s.total (s)", "total", "{:.3f}")
-row_pct("mesh (Gmsh, both meshes)", "mesh")
+row_pct("mesh (both meshes, built and checked)", "mesh")
 row_pct("fluid", "fluid")
 row_pct("  set-up (point locator, χ computer, pattern, element geometry)", "fluid setup")
 row_pct("  assembly", "assembly")
@@ -134,7 +145,7 @@ row_pct("  contact QPs", "qp")
 row_pct("transfer", "transfer")
 row_pct("  χ", "chi")
 row_pct("  v_h, p_h at the deformed vertices + force (33)", "force")
-row_pct("output (summary, history, case; PNG, VTU for the demo)", "output")
+row_pct("output (summary, history, case; PNG, VTU for the demo or --outputs)", "output")
 row_pct("rest (final ‖v_h‖ over Ω_S^u, contact summary)", "rest")
 row("process start/exit, outside timing_s (s)", "start/exit", "{:.3f}")
 row("one analysis + factorisation, averaged (s)", "per_factorization", "{:.3f}")

@@ -8,6 +8,14 @@ find_package(Boost 1.74 REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
+find_package(ZLIB REQUIRED)
+# CGAL (libcgal-dev, header-only, with GMP and MPFR for its exact predicates): the
+# constrained Delaunay triangulation and refinement of the mesh generator. Its target
+# adds -frounding-math for g++, which its interval filters need (without it a
+# release build crashed, measured).
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+find_package(CGAL 5.5 REQUIRED)
 
 # SuiteSparse and Gmsh ship no CMake config on Debian 12: locate them directly.
 find_path(SUITESPARSE_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)

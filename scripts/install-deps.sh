@@ -11,11 +11,13 @@ packages=(
   libopenblas0-serial    # optimised BLAS (becomes the system's libblas.so.3): 2-3x faster
                          # factorisations than the reference BLAS (docs/performance.md);
                          # serial, so results do not depend on a thread count
-  libgmsh-dev            # Gmsh SDK: mesh generation and .msh reading
+  libgmsh-dev            # Gmsh SDK: .geo scripts, .msh reading, body-fitted meshes
+  libcgal-dev            # CGAL: constrained Delaunay triangulation of the mesh generator
   coinor-libipopt-dev    # IPOPT, the paper's QP solver
   libtomlplusplus-dev    # case files
   libcli11-dev           # command line
-  libcairo2-dev          # PNG figures
+  libcairo2-dev          # PNG figures (drawn by Cairo)
+  libpng-dev zlib1g-dev  # PNG encoding, compressed VTU arrays
   nlohmann-json3-dev     # summary.json
   libboost-dev           # Boost.Geometry R-tree (point location)
   libgtest-dev libbenchmark-dev

@@ -79,11 +79,10 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   void extend(SampledTriangles sampled) override;
   void settle() override;
   // The first near region also covers the hint, so that a structure moving there
-  // does not force a second far-field factorisation. A region kept from before that
-  // does not cover it is dropped, so that the next one does.
+  // does not force a second far-field factorisation.
   void expect(Eigen::VectorXd chi_hint) override;
   // The near region and its far-field factorisation are kept (χ = 0 there, so they
-  // hold for any ε): a sweep's next row reuses them if its hint lies inside.
+  // hold for any ε): a sweep's next row reuses them if its first region is the same.
   void new_run() override;
   std::string name() const override { return whole_.name() + "+schur"; }
   const RegionSchurSolver* region() const override { return region_.get(); }
@@ -93,8 +92,9 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   void expand();
   bool exact_on(SampledTriangles sampled) const;
   bool near_region_covers(const Eigen::VectorXd& chi) const;
-  void build_near_region(const Eigen::VectorXd& chi, double eps);
-  void drop_region();
+  void start_region(const Eigen::VectorXd& chi, double eps);
+  std::vector<char> region_mask(const Eigen::VectorXd& chi);
+  void build_near_region(const Eigen::VectorXd& chi, double eps, std::vector<char> near);
 
   StokesAssembler& assembler_;
   WholeSolve whole_;  // when the near region would be most of D, or χ = 0
@@ -110,6 +110,7 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   double margin_ = 0;                         // the near region: χ's support's box grown by this
   std::vector<char> interior_vertex_;         // vertices whose triangles are all near
   bool too_large_ = false;                    // the near region would be most of D: solve whole
+  bool first_of_run_ = true;                  // the next solve is a run's first
   // The last solution is exact on the near region only; its χ and ε, for the
   // expansion (and the bubbles it recovers).
   bool pending_expansion_ = false;

@@ -19,7 +19,12 @@ SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::st
 // the whole solve.
 void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
   if (!too_large_ && (chi.array() != 0).any()) {
-    if (!region_ || !near_region_covers(chi)) build_near_region(chi, eps);
+    if (first_of_run_) {
+      first_of_run_ = false;
+      start_region(chi, eps);
+    } else if (!region_ || !near_region_covers(chi)) {
+      build_near_region(chi, eps, region_mask(chi));
+    }
     if (region_) {
       solve_near(chi, eps);
       if (!exact_on(sampled)) expand();
@@ -28,6 +33,19 @@ void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTr
   }
   whole_.solve(chi, eps, sampled);
   pending_expansion_ = false;
+}
+
+// A run's first region is the one a run of its own would build (χ and the hint, the
+// first margin); a region kept from the last run (a sweep's row) is reused only if it
+// is that region, triangle for triangle: the row's numbers are then those of a
+// separate run, bit for bit (another region rounds differently).
+void SubstructuredSolve::start_region(const Eigen::VectorXd& chi, double eps) {
+  margin_ = 0;
+  too_large_ = false;
+  std::vector<char> mask = region_mask(chi);
+  if (too_large_) return;
+  if (region_ && region_->near_mask() == mask) return;
+  build_near_region(chi, eps, std::move(mask));
 }
 
 void SubstructuredSolve::solve_near(const Eigen::VectorXd& chi, double eps) {
@@ -98,24 +116,14 @@ void SubstructuredSolve::settle() {
 
 void SubstructuredSolve::expect(Eigen::VectorXd chi_hint) {
   hint_ = std::move(chi_hint);
-  // Only the first region covers the hint (build_near_region): a kept one that does
-  // not would be grown around χ alone, the hint ignored (a sweep's rows).
-  if (region_ && hint_.size() == assembler_.mesh().num_triangles() && !near_region_covers(hint_)) drop_region();
 }
 
 void SubstructuredSolve::new_run() {
   whole_.new_run();
   pending_expansion_ = false;
-  hint_.resize(0);                               // the last run's
-  if (!region_) margin_ = 0, too_large_ = false;  // nothing kept: start afresh
-}
-
-// Forgets the near region: the next solve builds a first one.
-void SubstructuredSolve::drop_region() {
-  settle();  // the last solution needs the old region
-  region_.reset();
-  margin_ = 0;
-  too_large_ = false;
+  hint_.resize(0);  // the last run's
+  first_of_run_ = true;
+  too_large_ = false;  // decided again by the run's first region
 }
 
 // The support of chi and the triangles around it (sharing a vertex with it) inside
@@ -133,11 +141,9 @@ bool SubstructuredSolve::near_region_covers(const Eigen::VectorXd& chi) const {
 // The near region: the triangles meeting the bounding box of χ's support grown by a
 // margin, half the box's smaller side (at least 2 triangle sizes) at first and
 // doubled whenever χ leaves the region, so that a structure moving across D costs
-// a few far-field factorisations, not one per iteration.
-void SubstructuredSolve::build_near_region(const Eigen::VectorXd& chi, double eps) {
-  settle();  // the last solution needs the old region
-  region_.reset();
-  const Stopwatch clock;
+// a few far-field factorisations, not one per iteration. The first region covers the
+// hint too. Sets too_large_ (and returns no region) if it would be most of D.
+std::vector<char> SubstructuredSolve::region_mask(const Eigen::VectorXd& chi) {
   const Mesh& mesh = assembler_.mesh();
   Point lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   double h_max = 0;
@@ -167,10 +173,20 @@ void SubstructuredSolve::build_near_region(const Eigen::VectorXd& chi, double ep
   }
   if (2 * count > nt) {  // no gain over the whole factorisation
     too_large_ = true;
-    return;
+    return {};
   }
+  return near;
+}
+
+void SubstructuredSolve::build_near_region(const Eigen::VectorXd& chi, double eps,
+                                           std::vector<char> near) {
+  settle();  // the last solution needs the old region
+  region_.reset();
+  if (too_large_) return;
+  const Stopwatch clock;
+  const Mesh& mesh = assembler_.mesh();
   interior_vertex_.assign(mesh.num_vertices(), 1);  // all its triangles near
-  for (int t = 0; t < nt; ++t)
+  for (int t = 0; t < mesh.num_triangles(); ++t)
     if (!near[t])
       for (int v : mesh.triangles[t]) interior_vertex_[v] = 0;
   region_ = std::make_unique<RegionSchurSolver>(

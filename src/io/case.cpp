@@ -149,6 +149,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
                      {"rectangle", "mesh", "geo", "none"});
   p.model = s.choice("model", p.model, {"linear", "saint-venant-kirchhoff", "neo-hookean"});
   p.element = s.choice("element", p.element, {"P1", "P2"});
+  p.mesher = s.choice("mesher", p.mesher, {"lattice", "gmsh"});
   check_shape_files(p, origin);
   s.reject_unknown();
 }
@@ -177,6 +178,7 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
     p.sides[k] = s.choice(kBoxSideKeys[k], p.sides[k], {"wall", "inflow", "outflow"});
   p.h = s.number("h", p.h, kSize);
   p.mesh = resolve_path(s.text("mesh", ""), case_path);
+  p.mesher = s.choice("mesher", p.mesher, {"lattice", "gmsh"});
   p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
   p.factorization = s.choice("factorization", p.factorization, {"schur", "whole"});
   p.keep_far_factors_mb = s.number("keep_far_factors_mb", p.keep_far_factors_mb, kNonNegative);
@@ -215,6 +217,7 @@ void read_output(const toml::table& root, const Origin& origin, Case& c, std::ve
   c.output.dir_origin = origin.of("output.dir");
   c.output.png = s.boolean("png", c.output.png);
   c.output.vtu = s.boolean("vtu", c.output.vtu);
+  c.output.vtu_format = s.choice("vtu_format", c.output.vtu_format, {"binary", "zlib", "ascii"});
   c.output.probes = read_probes(s, origin);
   const std::string problem = output_path_problem(c.output.dir);
   if (!problem.empty()) fail(origin, "output.dir", problem, "a directory path");
@@ -338,6 +341,7 @@ std::string to_toml(const Case& c) {
   if (!s.geo.empty()) st.insert("geo", s.geo);
   if (s.model != "linear") st.insert("model", s.model);  // the default stays unwritten (Table 1's case.toml)
   if (s.element != "P1") st.insert("element", s.element);
+  if (s.mesher != "lattice") st.insert("mesher", s.mesher);
   t.insert("structure", st);
   const auto& o = c.obstacle;
   if (!c.obstacles_given) {
@@ -364,6 +368,7 @@ std::string to_toml(const Case& c) {
     if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
     else ft.insert("band", f.band);
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
+    if (f.mesher != "lattice") ft.insert("mesher", f.mesher);
     for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) ft.insert(kBoxSideKeys[k], f.sides[k]);
     t.insert("fluid", ft);
   }
@@ -374,6 +379,7 @@ std::string to_toml(const Case& c) {
   t.insert("coupling", coupling);
   t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
   toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};
+  if (c.output.vtu_format != "binary") output.insert("vtu_format", c.output.vtu_format);
   if (!c.output.probes.empty()) output.insert("probes", points_toml(c.output.probes));
   t.insert("output", output);
   std::ostringstream out;

@@ -26,6 +26,9 @@ struct StructureParams {
   // SPEC §11: "linear" (eq. 16, the paper) | "saint-venant-kirchhoff" | "neo-hookean".
   std::string model = "linear";
   std::string element = "P1";  // structure.element (SPEC §11): "P1" | "P2"
+  // Who makes the rectangle's mesh: "lattice" (the project's generator) | "gmsh"
+  // (Frontal-Delaunay: the meshes of fsicontact before issue 15).
+  std::string mesher = "lattice";
   bool rectangle() const { return shape == "rectangle"; }
   // The given file (mesh or script), for messages; empty for the rectangle.
   const std::string& file() const { return shape == "geo" ? geo : mesh; }
@@ -62,6 +65,8 @@ struct FluidParams {
   double Vmax = 8.0;
   double h = 0.01;                  // hF
   std::string mesh;                 // optional .msh file (resolved path)
+  std::string mesher =
+      "lattice";  // who makes the box's mesh: "lattice" | "gmsh" (as structure.mesher)
   std::string chi = "barycentre";   // "barycentre" | "area-fraction"
   // "schur": the far field factorised once per run, only the region around the
   // structure per χ; "whole": all of K per χ (PenalisedStokes, FluidFactorization).
@@ -112,6 +117,7 @@ struct OutputParams {
   std::string dir_origin;  // where dir came from (the file, --set, --out), for messages
   bool png = true;
   bool vtu = true;
+  std::string vtu_format = "binary";  // "binary" (appended raw) | "zlib" | "ascii" (io/vtu.hpp)
   // output.probes (SPEC §11): material points, in reference coordinates, where
   // summary.json (displacement_at) and history.csv report the displacement.
   std::vector<Point> probes;

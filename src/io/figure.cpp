@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "io/png.hpp"
+#include "io/raster.hpp"
 
 namespace fsi {
 namespace {
@@ -88,37 +89,18 @@ void Figure::note(const std::string& text) {
 
 void Figure::shade(const Mesh& mesh, const Eigen::VectorXd& value, double lo, double hi) {
   const double span = hi > lo ? hi - lo : 1.0;
-  cairo_save(cr_);
-  cairo_rectangle(cr_, left_, top_, plot_w_, plot_h_);
-  cairo_clip(cr_);
-  cairo_pattern_t* pattern = cairo_pattern_create_mesh();
-  int patches = 0;
-  auto flush = [&] {
-    cairo_set_source(cr_, pattern);
-    cairo_paint(cr_);
-    cairo_pattern_destroy(pattern);
-    pattern = cairo_pattern_create_mesh();
-    patches = 0;
-  };
-  for (const auto& tri : mesh.triangles) {
-    cairo_mesh_pattern_begin_patch(pattern);
-    for (int k = 0; k < 3; ++k) {
-      const Point& p = mesh.vertices[tri[k]];
-      if (k == 0)
-        cairo_mesh_pattern_move_to(pattern, px(p.x()), py(p.y()));
-      else
-        cairo_mesh_pattern_line_to(pattern, px(p.x()), py(p.y()));
-    }
-    for (int k = 0; k < 3; ++k) {
-      const Rgb c = viridis((value[tri[k]] - lo) / span);
-      cairo_mesh_pattern_set_corner_color_rgb(pattern, static_cast<unsigned>(k), c[0], c[1], c[2]);
-    }
-    cairo_mesh_pattern_end_patch(pattern);
-    if (++patches == 4096) flush();  // Cairo rasterises huge mesh patterns slowly
+  std::vector<Point> at(mesh.vertices.size());
+  std::vector<double> t01(mesh.vertices.size());
+  for (std::size_t v = 0; v < at.size(); ++v) {
+    at[v] = pixel(mesh.vertices[v]);
+    t01[v] = std::isfinite(value[v]) ? (value[v] - lo) / span : 0.0;
   }
-  if (patches) flush();
-  cairo_pattern_destroy(pattern);
-  cairo_restore(cr_);
+  cairo_surface_flush(surface_);
+  paint_field({reinterpret_cast<std::uint32_t*>(cairo_image_surface_get_data(surface_)),
+               cairo_image_surface_get_stride(surface_),
+               {left_, top_, left_ + plot_w_, top_ + plot_h_}},
+              at, mesh.triangles, t01);
+  cairo_surface_mark_dirty(surface_);
 }
 
 void Figure::fill_cells(const Mesh& mesh, const Eigen::VectorXd& value, double lo, double hi) {

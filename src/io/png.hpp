@@ -1,5 +1,6 @@
-// A Cairo surface saved as PNG, atomically and with the errno of a failed write
-// (Cairo's own file writer reports only CAIRO_STATUS_WRITE_ERROR).
+// A Cairo image surface (RGB24) saved as PNG through libpng, atomically and with the
+// errno of a failed write (Cairo's own file writer reports only
+// CAIRO_STATUS_WRITE_ERROR, and compresses 7x slower: png.cpp).
 #pragma once
 
 #include <cairo.h>

@@ -15,18 +15,6 @@
 namespace fsi {
 namespace {
 
-// Gmsh's geometric tolerances are absolute: the §7.1 beam scaled by 1e20 or 1e-100
-// made it throw (measured). So the geometry is meshed in units of a power of two
-// near its extent, exact to divide and multiply by (the vertices stay exactly at the
-// ends of Γ_C). Within [2^-8, 2^8] the unit is 1 and the meshes are bit for bit
-// those Gmsh makes of the lengths as given (the paper's cases).
-double reference_length(double extent) {
-  if (!std::isfinite(extent) || !(extent > 0) || (extent >= 0x1p-8 && extent <= 0x1p8)) return 1;
-  int exponent = 0;
-  std::frexp(extent, &exponent);
-  return std::ldexp(1.0, exponent);
-}
-
 // `optional_groups` present in `raw` are built like the required ones; the absent
 // become empty labels, so that the solvers find every label they ask for.
 Mesh build_and_validate(RawMesh raw, double unit, std::vector<std::string> boundary_groups,
@@ -45,7 +33,7 @@ Mesh build_and_validate(RawMesh raw, double unit, std::vector<std::string> bound
 Mesh generate(const std::string& doing, const std::function<RawMesh()>& mesher, double unit,
               const std::vector<std::string>& boundary_groups, const std::string& domain_group,
               const GmshLimits& limits, const std::vector<std::string>& optional_groups = {}) {
-  initialise_gmsh_once();
+  gmsh_plugin();  // loaded and initialised here, before the fork
   const std::size_t memory = physical_memory();
   const std::vector<char> bytes = run_in_child(
       [&] { return encode(mesher()); },
@@ -80,20 +68,12 @@ void check_mesh_file(const std::string& path) {
 
 }  // namespace
 
-Mesh generate_structure_mesh(const StructureGeometry& g) {
-  return generate_structure_mesh(g, {});
-}
-
-Mesh generate_structure_mesh(const StructureGeometry& g, const GmshLimits& limits) {
+Mesh gmsh_structure_mesh(const StructureGeometry& g, const GmshLimits& limits) {
   const double u = reference_length(std::max(std::abs(g.L), std::abs(g.H)));
   const StructureGeometry scaled{g.L / u, g.H / u, g.xc_min / u, g.xc_max / u, g.h / u};
   return generate(
-      "meshing the structure", [&] { return mesh_structure_in_gmsh(scaled); }, u,
+      "meshing the structure", [&] { return gmsh_plugin().mesh_structure(scaled); }, u,
       {"Gamma_D", "Gamma_C", "Gamma_N"}, "Omega_S", limits);
-}
-
-Mesh generate_fluid_mesh(const FluidGeometry& g) {
-  return generate_fluid_mesh(g, {});
 }
 
 namespace {
@@ -120,20 +100,13 @@ FluidGeometry scaled_box(const FluidGeometry& g, double u, std::vector<std::stri
 
 }  // namespace
 
-Mesh generate_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
+Mesh gmsh_fluid_mesh(const FluidGeometry& g, const GmshLimits& limits) {
   const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
   std::vector<std::string> labels;
   const FluidGeometry scaled = scaled_box(g, u, labels);
   return generate(
-      "meshing the fluid box", [&] { return mesh_fluid_in_gmsh(scaled); }, u, labels, "D", limits);
-}
-
-std::vector<int> hole_labels(const Mesh& mesh) {
-  // Sigma_5_i first: a file read for [[obstacles]] may also hold Sigma_5, empty.
-  std::vector<int> labels;
-  for (int i = 1; mesh.has_label("Sigma_5_" + std::to_string(i)); ++i) labels.push_back(mesh.label("Sigma_5_" + std::to_string(i)));
-  if (labels.empty() && mesh.has_label("Sigma_5")) return {mesh.label("Sigma_5")};
-  return labels;
+      "meshing the fluid box", [&] { return gmsh_plugin().mesh_fluid(scaled); }, u, labels, "D",
+      limits);
 }
 
 Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g) {
@@ -149,8 +122,8 @@ Mesh generate_fluid_mesh_around(const BodyFittedGeometry& g, const GmshLimits& l
   for (Point& p : scaled.outline) p /= u;
   labels.push_back("Gamma_u");
   return generate(
-      "meshing the fluid around the structure", [&] { return mesh_fluid_around_in_gmsh(scaled); },
-      u, labels, "D", limits);
+      "meshing the fluid around the structure",
+      [&] { return gmsh_plugin().mesh_fluid_around(scaled); }, u, labels, "D", limits);
 }
 
 Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& boundary_groups,
@@ -171,10 +144,10 @@ Mesh read_gmsh_file(const std::string& path, const std::vector<std::string>& bou
   const ChildTask task{"reading it", "a count in its header promises more than the file holds (" +
                                          std::to_string(size) + " bytes; the reader may use " +
                                          std::to_string(budget >> 20) + " MB)"};
-  initialise_gmsh_once();
   try {
-    const std::vector<char> bytes =
-        run_in_child([&] { return encode(read_in_gmsh(path)); }, task, {limits.seconds, budget});
+    gmsh_plugin();
+    const std::vector<char> bytes = run_in_child([&] { return encode(gmsh_plugin().read(path)); },
+                                                 task, {limits.seconds, budget});
     return build_and_validate(decode(bytes), 1, boundary_groups, domain_group, optional_groups);
   } catch (const MeshError& e) {
     throw MeshError(path + ": " + e.what());
@@ -187,8 +160,8 @@ Mesh mesh_geo_script(const std::string& path, double h, double max_triangles,
   const ScriptGeometry g{path, read_geo_script(path), h, max_triangles};
   try {
     return generate(
-        "running and meshing it", [&] { return mesh_script_in_gmsh(g); }, 1, boundary_groups, domain_group, limits,
-        optional_groups);
+        "running and meshing it", [&] { return gmsh_plugin().mesh_script(g, forbid_side_effects); },
+        1, boundary_groups, domain_group, limits, optional_groups);
   } catch (const MeshError& e) {
     throw MeshError(path + ": " + e.what());
   }

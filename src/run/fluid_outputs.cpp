@@ -8,12 +8,13 @@
 
 namespace fsi {
 
-void write_fluid_vtu(const std::string& path, const Mesh& mesh, const FluidSolution& s,
-                     const Eigen::VectorXd& chi) {
+void write_fluid_vtu(const std::string& path, const Case& c, const Mesh& mesh,
+                     const FluidSolution& s, const Eigen::VectorXd& chi) {
   const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
   write_vtu(path, mesh,
             {vector_field("velocity", s.v1, s.v2), scalar_field("velocity_magnitude", magnitude),
-             scalar_field("pressure", s.p), scalar_field("chi", chi, true)});
+             scalar_field("pressure", s.p), scalar_field("chi", chi, true)},
+            vtu_format(c.output.vtu_format));
 }
 
 namespace {

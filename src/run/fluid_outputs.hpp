@@ -10,9 +10,10 @@
 
 namespace fsi {
 
-// Point data: velocity (P1 part), velocity_magnitude, pressure; cell data: chi.
-void write_fluid_vtu(const std::string& path, const Mesh& mesh, const FluidSolution& s,
-                     const Eigen::VectorXd& chi);
+// Point data: velocity (P1 part), velocity_magnitude, pressure; cell data: chi. In
+// the case's output.vtu_format.
+void write_fluid_vtu(const std::string& path, const Case& c, const Mesh& mesh,
+                     const FluidSolution& s, const Eigen::VectorXd& chi);
 
 // |v| over D with the deformed structure outlined, the obstacle, and the contact
 // zone (vertices of `contact_vertices`, deformed) in red.

@@ -24,8 +24,8 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
       g.holes = case_holes(c);
-      return generate_fluid_mesh(g);
-    } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
+      return generate_fluid_mesh(g, mesh_generator(f.mesher));
+    } catch (const MeshError& e) {  // the geometry was validated: the generator's failure
       throw SolverFailure(std::string("meshing the fluid box failed: ") + e.what());
     }
   }

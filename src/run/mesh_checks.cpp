@@ -32,9 +32,26 @@ Box bounding_box(const Mesh& mesh) {
 }
 
 // x strictly inside the counter-clockwise triangle abc.
-bool strictly_inside(const Point& a, const Point& b, const Point& c, const Point& x) {
-  auto left = [&x](const Point& p, const Point& q) { return (q - p).x() * (x - p).y() - (q - p).y() * (x - p).x() > 0; };
-  return left(a, b) && left(b, c) && left(c, a);
+// x in the closed triangle abc (counter-clockwise): on no side's right.
+bool in_closed_triangle(const Point& a, const Point& b, const Point& c, const Point& x) {
+  auto not_right = [&x](const Point& p, const Point& q) {
+    return (q - p).x() * (x - p).y() - (q - p).y() * (x - p).x() >= 0;
+  };
+  return not_right(a, b) && not_right(b, c) && not_right(c, a);
+}
+
+// x inside the structure: in a triangle, or on an edge or a vertex between triangles,
+// but not on the boundary (touching it is allowed).
+bool inside_mesh(const Mesh& mesh, const Point& x) {
+  for (const BoundaryEdge& e : mesh.boundary_edges) {
+    const Point &a = mesh.vertices[e.v[0]], &b = mesh.vertices[e.v[1]];
+    const double cross = (b - a).x() * (x - a).y() - (b - a).y() * (x - a).x();
+    if (cross == 0 && (x - a).dot(b - a) >= 0 && (x - b).dot(a - b) >= 0) return false;
+  }
+  for (const auto& t : mesh.triangles)
+    if (in_closed_triangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], x))
+      return true;
+  return false;
 }
 
 // The open segments ab and cd cross at one point inside both (touching is not crossing).
@@ -124,10 +141,9 @@ void check_corners_outside(const Case& c, const Mesh& mesh, const std::string& w
     const std::vector<Point>& p = c.obstacles[i].points;
     const std::string whose = " of obstacles[" + std::to_string(i + 1) + "]";
     for (const Point& corner : p)
-      for (const auto& t : mesh.triangles)
-        if (strictly_inside(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], corner))
-          throw InputError(c.source + ": " + what + ": the corner " + at(corner) + whose +
-                           " lies inside the structure at rest" + allowed);
+      if (inside_mesh(mesh, corner))
+        throw InputError(c.source + ": " + what + ": the corner " + at(corner) + whose +
+                         " lies inside the structure at rest" + allowed);
     for (std::size_t k = 0; k < p.size(); ++k)
       for (const BoundaryEdge& e : mesh.boundary_edges)
         if (strictly_crossing(p[k], p[(k + 1) % p.size()], mesh.vertices[e.v[0]], mesh.vertices[e.v[1]]))

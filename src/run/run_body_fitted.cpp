@@ -209,11 +209,11 @@ RunResult run_body_fitted_case(const Case& c, const RunOptions& options) {
     if (c.output.vtu && last) {
       const Eigen::VectorXd chi = Eigen::VectorXd::Zero(last->mesh->num_triangles());
       const bool fluid_vtu = out.write("fluid.vtu", [&](const std::string& p) {
-        write_fluid_vtu(p, *last->mesh, last->solution, chi);
+        write_fluid_vtu(p, c, *last->mesh, last->solution, chi);
       });
       if (!fluid_only) {
         const bool structure_vtu = out.write("structure.vtu", [&](const std::string& p) {
-          write_structure_vtu(p, s, result.structure, true);
+          write_structure_vtu(p, c, s, result.structure, true);
         });
         if (fluid_vtu && structure_vtu)
           out.write("fsi.pvd", [&](const std::string& p) {

@@ -97,7 +97,9 @@ RunResult run_contact_case(const Case& c, const RunOptions& options) {
       c, r,
       [&](RunOutputs& out) {
         ScopedPhase phase(times, "output");
-        if (c.output.vtu) out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, solution, false); });
+        if (c.output.vtu)
+          out.write("structure.vtu",
+                    [&](const std::string& p) { write_structure_vtu(p, c, s, solution, false); });
         if (c.output.png) out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, solution); });
         out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
       },

@@ -64,7 +64,9 @@ RunResult run_fluid_case(const Case& c, const RunOptions& options) {
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
     if (c.output.vtu)
-      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
+      out.write("fluid.vtu", [&](const std::string& p) {
+        write_fluid_vtu(p, c, *f.mesh, *fluid, f.stokes->last_solution_chi());
+      });
     if (c.output.png)
       out.write("fluid.png", [&](const std::string& p) {
         write_fluid_png(p, c, *f.mesh, *fluid, Mesh{}, {}, c.name + ": fluid velocity magnitude (no structure)",

@@ -241,11 +241,13 @@ void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const Couplin
   StructureSetup& s = su.s;
   FluidSetup& f = su.f;
   if (c.output.vtu && fluid) {
-    const bool fluid_vtu =
-        out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, *f.mesh, *fluid, f.stokes->last_solution_chi()); });
+    const bool fluid_vtu = out.write("fluid.vtu", [&](const std::string& p) {
+      write_fluid_vtu(p, c, *f.mesh, *fluid, f.stokes->last_solution_chi());
+    });
     if (!fluid_only) {
-      const bool structure_vtu =
-          out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, s, result.structure, true); });
+      const bool structure_vtu = out.write("structure.vtu", [&](const std::string& p) {
+        write_structure_vtu(p, c, s, result.structure, true);
+      });
       if (fluid_vtu && structure_vtu)  // never a .pvd that names a missing file
         out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
     }

@@ -65,7 +65,7 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
   return out;
 }
 
-void write_structure_vtu(const std::string& path, const StructureSetup& s,
+void write_structure_vtu(const std::string& path, const Case& c, const StructureSetup& s,
                          const ContactSolution& solution, bool deformed) {
   const Mesh& ref = s.mesh();
   const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
@@ -84,11 +84,11 @@ void write_structure_vtu(const std::string& path, const StructureSetup& s,
     std::vector<std::array<int, 6>> cells;
     for (int t = 0; t < p2->mesh().num_triangles(); ++t) cells.push_back(p2->element(t));
     fields.push_back(scalar_field("von_mises", von_mises(*p2, s.lame, solution.u), true));
-    write_quadratic_vtu(path, points.vertices, cells, fields);
+    write_quadratic_vtu(path, points.vertices, cells, fields, vtu_format(c.output.vtu_format));
     return;
   }
   fields.push_back(scalar_field("von_mises", von_mises(ref, s.lame, solution.u), true));
-  write_vtu(path, points, fields);
+  write_vtu(path, points, fields, vtu_format(c.output.vtu_format));
 }
 
 void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,

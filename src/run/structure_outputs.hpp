@@ -13,7 +13,7 @@ namespace fsi {
 // Point data: displacement, contact_multiplier, contact_status; cell data: von_mises.
 // `deformed`: write deformed coordinates (to overlay the fluid) instead of the
 // reference ones (to use ParaView's "Warp By Vector").
-void write_structure_vtu(const std::string& path, const StructureSetup& s,
+void write_structure_vtu(const std::string& path, const Case& c, const StructureSetup& s,
                          const ContactSolution& solution, bool deformed);
 
 // Every obstacle of the case as a polygon: [obstacle]'s disk, or those of

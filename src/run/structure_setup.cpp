@@ -24,8 +24,8 @@ Mesh build_structure_mesh(const Case& c) {
       // With [[obstacles]] Gamma_C is only a label (contact.boundary = "all"): the
       // bottom's middle third.
       const double xc0 = c.obstacles_given ? s.L / 3 : o.xc_min(), xc1 = c.obstacles_given ? 2 * s.L / 3 : o.xc_max();
-      return generate_structure_mesh({s.L, s.H, xc0, xc1, s.h});
-    } catch (const MeshError& e) {  // the geometry was validated: Gmsh's failure, or ours
+      return generate_structure_mesh({s.L, s.H, xc0, xc1, s.h}, mesh_generator(s.mesher));
+    } catch (const MeshError& e) {  // the geometry was validated: the generator's failure
       throw SolverFailure(std::string("meshing the structure failed: ") + e.what());
     }
   }

@@ -14,9 +14,10 @@ Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
 }  // namespace
 
 Json to_json(const StructureParams& s) {
-  return {{"shape", s.shape}, {"L", s.L}, {"H", s.H}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)},
-          {"h_N", vec(s.h_N)}, {"h", s.h}, {"mesh", s.mesh}, {"geo", s.geo}, {"model", s.model},
-          {"element", s.element}};
+  return {{"shape", s.shape},  {"L", s.L},      {"H", s.H},          {"E", s.E},
+          {"nu", s.nu},        {"f", vec(s.f)}, {"h_N", vec(s.h_N)}, {"h", s.h},
+          {"mesh", s.mesh},    {"geo", s.geo},  {"model", s.model},  {"element", s.element},
+          {"mesher", s.mesher}};
 }
 
 Json to_json(const ObstacleParams& o) {
@@ -24,10 +25,21 @@ Json to_json(const ObstacleParams& o) {
 }
 
 Json to_json(const FluidParams& f) {
-  Json j = {{"L1", f.L1},     {"H1", f.H1}, {"H2", f.H2},     {"mu", f.mu},   {"f", vec(f.f)},
-          {"Vmax", f.Vmax}, {"h", f.h},   {"mesh", f.mesh}, {"chi", f.chi}, {"factorization", f.factorization},
-          {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
-          {"band", f.band_box ? Json(*f.band_box) : Json(f.band)}, {"method", f.method}};
+  Json j = {{"L1", f.L1},
+            {"H1", f.H1},
+            {"H2", f.H2},
+            {"mu", f.mu},
+            {"f", vec(f.f)},
+            {"Vmax", f.Vmax},
+            {"h", f.h},
+            {"mesh", f.mesh},
+            {"chi", f.chi},
+            {"factorization", f.factorization},
+            {"keep_far_factors_mb", f.keep_far_factors_mb},
+            {"h_near", f.h_near},
+            {"band", f.band_box ? Json(*f.band_box) : Json(f.band)},
+            {"method", f.method},
+            {"mesher", f.mesher}};
   for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) j[kBoxSideKeys[k]] = f.sides[k];
   return j;
 }
@@ -40,7 +52,7 @@ Json to_json(const CouplingParams& k) {
 Json to_json(const ContactParams& c) { return {{"solver", c.solver}, {"gap", c.gap}, {"boundary", c.boundary}}; }
 
 Json to_json(const OutputParams& o) {
-  Json j = {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}};
+  Json j = {{"dir", o.dir}, {"png", o.png}, {"vtu", o.vtu}, {"vtu_format", o.vtu_format}};
   if (!o.probes.empty()) {  // absent without probes: the parameters of earlier runs unchanged
     j["probes"] = Json::array();
     for (const Point& p : o.probes) j["probes"].push_back(point_json(p));

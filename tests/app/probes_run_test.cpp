@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "support/cli.hpp"
+#include "support/vtu_reader.hpp"
 
 namespace fsi {
 namespace {
@@ -16,25 +17,15 @@ namespace {
 namespace fs = std::filesystem;
 using Vertex = std::array<double, 2>;
 
-// The numbers of the first ASCII <DataArray> at or after `marker` in our VTU file
-// ("<Points>", "Name=\"displacement\"").
-std::vector<double> data_array(const std::string& vtu, const std::string& marker) {
-  const std::size_t begin = vtu.find('>', vtu.find(marker) + marker.size()) + 1;
-  std::istringstream in(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
-  std::vector<double> v;
-  for (double x; in >> x;) v.push_back(x);
-  return v;
-}
-
 struct StructureField {
   std::vector<Vertex> X, u;          // reference vertices and their displacement
   std::vector<std::array<int, 3>> triangles;
 };
 
 StructureField read_structure_vtu(const fs::path& path) {
-  const std::string vtu = testing::slurp(path);
-  const std::vector<double> points = data_array(vtu, "<Points>"), u = data_array(vtu, "Name=\"displacement\""),
-                            cells = data_array(vtu, "Name=\"connectivity\"");
+  const auto vtu = testing::read_vtu(path);
+  const std::vector<double>&points = vtu.at(""), &u = vtu.at("displacement"),
+        &cells = vtu.at("connectivity");
   StructureField f;
   for (std::size_t v = 0; 3 * v + 2 < points.size(); ++v) {
     f.X.push_back({points[3 * v], points[3 * v + 1]});  // the reference configuration

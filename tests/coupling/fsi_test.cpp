@@ -163,13 +163,17 @@ TEST(Fsi, VelocityInsideTheStructureIsOrderEpsilon) {
 // Constant ω, Aitken and IQN-ILS stop at the same solution up to the stopping
 // tolerance. Each stops when ‖H(u) − u‖ < tol = 1e-4; the coupled map is a
 // contraction here (constant ω = 0.1 converges), so each iterate lies within a few
-// tol of the fixed point: 5·tol between any two is the bound checked (measured 0.7·tol).
+// tol of the fixed point: 5·tol between any two is the bound checked. With the
+// area-fraction χ, H is continuous: the barycentre χ's is piecewise constant, and on
+// these coarse meshes its schemes end at different fixed points (measured: 1.1e-3
+// apart, docs/validation.md; each a fixed point, tests/study/converge_test.cpp).
 TEST(Fsi, RelaxationSchemesReachTheSameSolutionAcceleratedOnesFaster) {
-  const Coupled constant = solve({"coupling.scheme=\"constant\""});
-  const Coupled aitken = solve({"coupling.scheme=\"aitken\""});
-  const Coupled iqn = solve({"coupling.scheme=\"iqn-ils\""});
+  const std::string chi = "fluid.chi=area-fraction";
+  const Coupled constant = solve({"coupling.scheme=\"constant\"", chi});
+  const Coupled aitken = solve({"coupling.scheme=\"aitken\"", chi});
+  const Coupled iqn = solve({"coupling.scheme=\"iqn-ils\"", chi});
   // Aitken's first step unrelaxed (ω⁰ = 1, the setting docs/performance.md measures)
-  const Coupled aitken1 = solve({"coupling.scheme=\"aitken\"", "coupling.omega=1.0"});
+  const Coupled aitken1 = solve({"coupling.scheme=\"aitken\"", "coupling.omega=1.0", chi});
   for (const Coupled* c : {&constant, &aitken, &iqn, &aitken1}) ASSERT_TRUE(c->result.converged);
   auto distance = [&](const Coupled& a, const Coupled& b) {
     const Eigen::VectorXd d = a.result.structure.u - b.result.structure.u;

@@ -6,6 +6,10 @@
 //      straddling ∂Ω_S with their barycentre outside have χ = 0 and let flow through
 //      that sliver of Ω_S. The floor depends on hF, not ε. This is why the paper's
 //      ‖v‖/ε column grows ~10× per decade of ε (1393 at 1e-5, 17139 at 1e-6).
+// On Gmsh's meshes (fluid.mesher = "gmsh"), whose triangles straddle the beam's sides
+// everywhere: the lattice generator's rows at hF = 0.01 run along y = 0, the beam's
+// underside, and its floor is 20 times lower there (1.1e-4 against 2.1e-2 at hF =
+// 0.02), too close to the penalised region's norm for (2) to show.
 #include <gtest/gtest.h>
 
 #include "io/case.hpp"
@@ -20,7 +24,7 @@ struct Norms {
 };
 
 std::vector<Norms> sweep(double hF, const std::vector<double>& eps_values) {
-  const Case c = load_case("", {"fluid.h=" + std::to_string(hF)});
+  const Case c = load_case("", {"fluid.h=" + std::to_string(hF), "fluid.mesher=gmsh"});
   const Mesh structure = make_structure_mesh(c);
   FluidSetup f = make_fluid(c, make_fluid_mesh(c), 1.0);
   const Eigen::VectorXd chi = (*f.chi)(structure);

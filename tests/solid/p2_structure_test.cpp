@@ -102,10 +102,10 @@ TEST(P2Structure, IpoptAndTheActiveSetSolverAgreeOnAP2Beam) {
   }
 }
 
-// Paper Fig. 7: the 2.5 mm beam, two P1 elements through its thickness on the coarse
-// mesh, bends 17 % less there than on the fine mesh (P1 locks in bending:
-// paper_7_1_test.cpp). With P2 the two meshes agree within 1 % (issue 14), and the
-// contact zones overlap.
+// Paper Fig. 7: the 2.5 mm beam, three P1 elements through its thickness on the coarse
+// mesh, bends 9.6 % less there than on the fine mesh (P1 locks in bending:
+// paper_7_1_test.cpp; 14.9 % on Gmsh's coarse mesh, two elements thick). With P2 the
+// two meshes agree within 1 % (0.47 %; issue 14), and the contact zones overlap.
 TEST(P2Structure, TheThinBeamsCoarseAndFineMeshesAgreeWithP2) {
   const Solved coarse = solve("paper-7.1-fig7-coarse", {"structure.element=P2"});
   const Solved fine = solve("paper-7.1-fig7-fine", {"structure.element=P2"});
@@ -115,7 +115,8 @@ TEST(P2Structure, TheThinBeamsCoarseAndFineMeshesAgreeWithP2) {
               100 * (p1_fine.deflection - p1_coarse.deflection) / p1_fine.deflection, 1e3 * coarse.deflection,
               1e3 * fine.deflection, 100 * (fine.deflection - coarse.deflection) / fine.deflection);
   EXPECT_NEAR(coarse.deflection, fine.deflection, 0.01 * fine.deflection);
-  EXPECT_GT(std::abs(p1_fine.deflection - p1_coarse.deflection), 0.1 * p1_fine.deflection) << "P1 no longer locks?";
+  EXPECT_GT(std::abs(p1_fine.deflection - p1_coarse.deflection), 0.05 * p1_fine.deflection)
+      << "P1 no longer locks?";
   ASSERT_GE(coarse.contact.active_nodes, 1);
   ASSERT_GE(fine.contact.active_nodes, 1);
   EXPECT_LE(std::max(fine.contact.x_min - coarse.contact.x_max, coarse.contact.x_min - fine.contact.x_max), 0.0);
