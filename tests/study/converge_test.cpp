@@ -93,7 +93,9 @@ TEST(Converge, RestartsASchemeThatEndsElsewhere) {
                                                             ? fs::path(restart["dir"].get<std::string>()) / "summary.json"
                                                             : dir / restart["dir"].get<std::string>() / "summary.json"));
     EXPECT_EQ(s["initial_state"], "given");
-    if (verdict.find("stops at once") != std::string::npos) EXPECT_EQ(s["iterations"], 1);
+    if (verdict.find("stops at once") != std::string::npos) {
+      EXPECT_EQ(s["iterations"], 1);
+    }
   }
   EXPECT_NE(r.out.find("restarted from constant's end state"), std::string::npos) << r.out;
   fs::remove_all(dir);
