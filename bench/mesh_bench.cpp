@@ -55,6 +55,11 @@ std::size_t gmsh_box(int algorithm, double h, int smoothing, double h_near) {
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> tags, nodes;
   gmsh::model::mesh::getElements(types, tags, nodes, 2);
+  // This process's Gmsh is the one the program's plugin uses too (one libgmsh): leave
+  // the options as the program expects them (measured: the band's settings left behind
+  // changed generate_fluid's Gmsh meshes).
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
   return tags.empty() ? 0 : tags[0].size();
 }
 

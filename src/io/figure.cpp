@@ -254,6 +254,8 @@ void Figure::save_png(const std::string& path) {
   write_png_atomically(path, surface_);
 }
 
+std::string Figure::png(const std::string& name) const { return encode_png(surface_, name); }
+
 std::vector<std::vector<Point>> boundary_loops(const Mesh& mesh) {
   // Boundary edges are the triangle edges used once; chain them into loops.
   std::map<std::pair<int, int>, int> count;

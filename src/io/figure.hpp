@@ -44,6 +44,7 @@ class Figure {
   void axes(const std::string& x_label, const std::string& y_label);
   void note(const std::string& text);  // a line under the title
   void save_png(const std::string& path);
+  std::string png(const std::string& name) const;  // the PNG's bytes (name: for messages)
   // Where a world point is drawn, in pixels of the saved image (x right, y down): the
   // layout depends on the box and the width only (tests check figures by it).
   Point pixel(const Point& world) const { return Point(px(world.x()), py(world.y())); }

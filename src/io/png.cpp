@@ -51,9 +51,13 @@ bool encode(png_structp png, png_infop info, const unsigned char* data, int widt
 }  // namespace
 
 void write_png_atomically(const std::string& path, cairo_surface_t* surface) {
+  write_file_atomically(path, encode_png(surface, path));
+}
+
+std::string encode_png(cairo_surface_t* surface, const std::string& path) {
   cairo_surface_flush(surface);
   if (cairo_image_surface_get_format(surface) != CAIRO_FORMAT_RGB24)
-    throw std::logic_error("write_png_atomically: an RGB24 image surface is expected");
+    throw std::logic_error("encode_png: an RGB24 image surface is expected");
   const int width = cairo_image_surface_get_width(surface),
             height = cairo_image_surface_get_height(surface);
   std::vector<unsigned char> row(3 * static_cast<std::size_t>(width));
@@ -65,7 +69,7 @@ void write_png_atomically(const std::string& path, cairo_surface_t* surface) {
   png_destroy_write_struct(&png, info ? &info : nullptr);
   if (!ok)
     throw std::runtime_error("cannot encode " + path + " as PNG: libpng failed (out of memory?)");
-  write_file_atomically(path, bytes);
+  return bytes;
 }
 
 }  // namespace fsi

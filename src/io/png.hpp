@@ -10,5 +10,7 @@
 namespace fsi {
 
 void write_png_atomically(const std::string& path, cairo_surface_t* surface);
+// The PNG's bytes (`path` names it in a failure's message).
+std::string encode_png(cairo_surface_t* surface, const std::string& path);
 
 }  // namespace fsi

@@ -47,13 +47,11 @@ WorldBox fluid_figure_box(const FluidParams& f) {
   return {-pad, f.L1 + pad, -f.H2 - pad, f.H1 + pad};
 }
 
-void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
-                     const FluidSolution& s, const Mesh& deformed_structure,
-                     const std::vector<int>& contact_vertices, const std::string& title,
-                     const std::string& note) {
-  const FluidParams& f = *c.fluid;
-  const WorldBox box = fluid_figure_box(f);
-  Figure fig(box, kFluidFigureWidth, title);
+namespace {
+
+// The velocity picture, drawn.
+void draw_fluid(Figure& fig, const Case& c, const WorldBox& box, const Mesh& fluid_mesh, const FluidSolution& s,
+                const Mesh& deformed_structure, const std::vector<int>& contact_vertices, const std::string& note) {
   fig.note(note);
   const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
   fig.shade(fluid_mesh, magnitude, 0.0, magnitude.maxCoeff());
@@ -63,12 +61,32 @@ void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_m
   }
   for (const auto& loop : boundary_loops(deformed_structure)) fig.polyline(loop, {1, 1, 1}, 1.6, true);
   for (int v : contact_vertices) fig.marker(deformed_structure.vertices[v], {0.9, 0.1, 0.1}, 3.5);
-  std::vector<std::pair<Rgb, std::string>> legend = draw_box_sides(fig, f);
+  std::vector<std::pair<Rgb, std::string>> legend = draw_box_sides(fig, *c.fluid);
   fig.axes("x (m)", "y (m)");
   fig.colour_bar(0.0, magnitude.maxCoeff(), "|v| (m/s)");
   legend.insert(legend.begin(), {{{1, 1, 1}, "structure"}, {{0.82, 0.82, 0.82}, "obstacle"}, {{0.9, 0.1, 0.1}, "contact"}});
   fig.legend(legend);
+}
+
+}  // namespace
+
+void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
+                     const FluidSolution& s, const Mesh& deformed_structure,
+                     const std::vector<int>& contact_vertices, const std::string& title,
+                     const std::string& note) {
+  const WorldBox box = fluid_figure_box(*c.fluid);
+  Figure fig(box, kFluidFigureWidth, title);
+  draw_fluid(fig, c, box, fluid_mesh, s, deformed_structure, contact_vertices, note);
   fig.save_png(path);
+}
+
+std::string fluid_png(const std::string& name, const Case& c, const Mesh& fluid_mesh, const FluidSolution& s,
+                      const Mesh& deformed_structure, const std::vector<int>& contact_vertices,
+                      const std::string& title, const std::string& note) {
+  const WorldBox box = fluid_figure_box(*c.fluid);
+  Figure fig(box, kFluidFigureWidth, title);
+  draw_fluid(fig, c, box, fluid_mesh, s, deformed_structure, contact_vertices, note);
+  return fig.png(name);
 }
 
 }  // namespace fsi

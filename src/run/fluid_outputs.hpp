@@ -21,6 +21,11 @@ void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_m
                      const FluidSolution& s, const Mesh& deformed_structure,
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note);
+// The same picture as PNG bytes, to be written later: run_fsi.cpp draws it while the
+// other files are written (on a second core).
+std::string fluid_png(const std::string& name, const Case& c, const Mesh& fluid_mesh, const FluidSolution& s,
+                      const Mesh& deformed_structure, const std::vector<int>& contact_vertices,
+                      const std::string& title, const std::string& note);
 // That picture's world box (the fluid box with a 2 % margin) and plot width in pixels:
 // Figure(fluid_figure_box(f), kFluidFigureWidth, ...).pixel(x) is where x is drawn.
 WorldBox fluid_figure_box(const FluidParams& f);

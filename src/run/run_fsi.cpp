@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <iomanip>
 #include <optional>
 
@@ -236,10 +237,29 @@ const FluidSolution* fluid_everywhere(const Case& c, FluidSetup& f, CouplingResu
 
 // Write: the fields where they exist everywhere (`fluid`: null draws no fluid),
 // history.csv, case.toml.
+// The velocity picture is drawn and encoded on a second thread while the other files
+// are written (measured: a row's outputs 67 → 55–60 ms at hF = 0.01); the files
+// themselves are written one at a time (an interrupted write removes its one
+// temporary: common/interrupt.hpp).
 void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const CouplingResult& result,
                      const FluidSolution* fluid, const Mesh& deformed, bool fluid_only) {
   StructureSetup& s = su.s;
   FluidSetup& f = su.f;
+  const std::string picture = fluid_only ? "fluid.png" : "fsi.png";
+  std::future<std::string> png;
+  if (c.output.png && fluid) {
+    char note[256];
+    std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s", c.coupling.eps,
+                  c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h, c.structure.h,
+                  fluid_only ? "structure at rest"
+                             : (std::to_string(result.iterations) + " iterations" +
+                                (result.converged ? "" : " (not converged)")).c_str());
+    std::vector<int> contact = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
+    png = std::async(std::launch::async, [&, note = std::string(note), contact = std::move(contact)] {
+      return fluid_png(out.path(picture), c, *f.mesh, *fluid, deformed, contact,
+                       c.name + ": fluid velocity magnitude", note);
+    });
+  }
   if (c.output.vtu && fluid) {
     const bool fluid_vtu = out.write("fluid.vtu", [&](const std::string& p) {
       write_fluid_vtu(p, c, *f.mesh, *fluid, f.stokes->last_solution_chi());
@@ -252,22 +272,11 @@ void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const Couplin
         out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
     }
   }
-  if (c.output.png && fluid) {
-    char note[256];
-    std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s", c.coupling.eps,
-                  c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h, c.structure.h,
-                  fluid_only ? "structure at rest"
-                             : (std::to_string(result.iterations) + " iterations" +
-                                (result.converged ? "" : " (not converged)")).c_str());
-    const std::vector<int> contact_vertices = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
-    out.write(fluid_only ? "fluid.png" : "fsi.png", [&](const std::string& p) {
-      write_fluid_png(p, c, *f.mesh, *fluid, deformed, contact_vertices, c.name + ": fluid velocity magnitude", note);
-    });
-    if (!fluid_only)
-      out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
-  }
+  if (c.output.png && fluid && !fluid_only)
+    out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
   if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history, false); });
   out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
+  if (png.valid()) out.write(picture, [&](const std::string& p) { write_file_atomically(p, png.get()); });
 }
 
 }  // namespace

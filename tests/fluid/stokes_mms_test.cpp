@@ -89,7 +89,7 @@ TEST(StokesMms, UnitSquareConvergesAtMiniElementRates) {
 }
 
 // The paper's topology: a box with a circular hole (no-slip hole, outlet at the
-// bottom), unstructured Gmsh meshes: rates fitted over the sequence.
+// bottom), the generated (unstructured) meshes: rates fitted over the sequence.
 TEST(StokesMms, BoxWithHoleConvergesAtMiniElementRates) {
   std::vector<double> h;
   std::vector<testing::StokesErrors> e;

@@ -82,10 +82,10 @@ TEST(ElasticityMms, ConvergesAtTheP1RatesOnNestedMeshes) {
   }
 }
 
-// Unstructured Gmsh meshes (the ones runs use). They are not nested, so pairwise
-// rates scatter (1.76 to 2.75 in L² here); the least-squares slope over the whole
-// sequence is the meaningful rate.
-TEST(ElasticityMms, ConvergesAtTheP1RatesOnGmshMeshes) {
+// The generated meshes (the ones runs use: the lattice generator's). They are not
+// nested, so pairwise rates scatter; the least-squares slope over the whole sequence
+// is the meaningful rate (measured 1.95 and 1.01; on Gmsh's meshes 2.03 and 1.02).
+TEST(ElasticityMms, ConvergesAtTheP1RatesOnGeneratedMeshes) {
   std::vector<double> log_h, log_l2, log_h1;
   for (double h : {0.1, 0.05, 0.025, 0.0125, 0.00625}) {
     const Mesh mesh = generate_structure_mesh({1.0, 0.5, 0.4, 0.6, h});
@@ -95,7 +95,7 @@ TEST(ElasticityMms, ConvergesAtTheP1RatesOnGmshMeshes) {
     log_h1.push_back(std::log(e.h1));
   }
   const double r_l2 = testing::fitted_slope(log_h, log_l2), r_h1 = testing::fitted_slope(log_h, log_h1);
-  std::printf("Gmsh sequence: fitted L2 rate %.3f, H1 rate %.3f\n", r_l2, r_h1);
+  std::printf("generated sequence: fitted L2 rate %.3f, H1 rate %.3f\n", r_l2, r_h1);
   EXPECT_GE(r_l2, 1.9);
   EXPECT_GE(r_h1, 0.9);
 }
