@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <functional>
+#include <future>
 #include <vector>
 
 #include "fluid/mini_element.hpp"
@@ -80,7 +81,8 @@ class StokesAssembler {
   void recover_bubble(int t, double kappa, FluidSolution& out) const;
 
   // A fill-reducing order of the unknowns (position of each reduced dof), computed
-  // once: METIS nested dissection of the vertex graph.
+  // once: METIS nested dissection of the vertex graph, started on a second thread
+  // when the assembler is built (see the definition).
   const std::vector<int>& dof_rank();
 
  private:
@@ -97,6 +99,7 @@ class StokesAssembler {
   std::vector<int> slot_;              // 81 per triangle: position in K_.valuePtr(), −1 if not free-free
   long nonzeros_ = 0;
   std::vector<int> dof_rank_;
+  std::future<std::vector<int>> vertex_order_;  // METIS's order of the vertices, until dof_rank()
   Eigen::VectorXd traction_load_;      // ∫ h·w on the reduced dofs
   Eigen::SparseMatrix<double> K_;
   Eigen::VectorXd rhs_;

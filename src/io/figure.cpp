@@ -72,6 +72,19 @@ Figure::Figure(const WorldBox& box, int width, const std::string& title) : box_(
   cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
 }
 
+void load_figure_fonts() {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+  cairo_t* cr = cairo_create(surface);
+  cairo_text_extents_t extents;
+  for (const auto weight : {CAIRO_FONT_WEIGHT_BOLD, CAIRO_FONT_WEIGHT_NORMAL}) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, weight);
+    cairo_set_font_size(cr, weight == CAIRO_FONT_WEIGHT_BOLD ? 17 : 13);
+    cairo_text_extents(cr, "0", &extents);
+  }
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+}
+
 Figure::~Figure() {
   if (cr_) cairo_destroy(cr_);
   if (surface_) cairo_surface_destroy(surface_);

@@ -23,6 +23,12 @@ struct WorldBox {
   double x_min, x_max, y_min, y_max;
 };
 
+// Loads what a figure's first text needs (fontconfig's configuration and font list,
+// the FreeType faces of the title and the notes): ~10 ms once per process, which a
+// run spends on its second core while it solves (run_fsi.cpp) instead of in its
+// first figure. Harmless to call more than once or from any thread.
+void load_figure_fonts();
+
 class Figure {
  public:
   // `width` pixels for the plot area; the height follows from the box (equal aspect).

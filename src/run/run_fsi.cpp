@@ -9,16 +9,17 @@
 #include <optional>
 
 #include "common/errors.hpp"
-#include "common/format.hpp"
 #include "common/fault.hpp"
+#include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "io/atomic_file.hpp"
+#include "io/figure.hpp"
 #include "io/vtu.hpp"
-#include "run/coupling_outputs.hpp"
-#include "run/fluid_outputs.hpp"
 #include "run/contact_gap.hpp"
+#include "run/coupling_outputs.hpp"
 #include "run/fluid_band.hpp"
+#include "run/fluid_outputs.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
@@ -255,7 +256,8 @@ void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const Couplin
                              : (std::to_string(result.iterations) + " iterations" +
                                 (result.converged ? "" : " (not converged)")).c_str());
     std::vector<int> contact = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
-    png = std::async(std::launch::async, [&, note = std::string(note), contact = std::move(contact)] {
+    png = std::async(std::launch::async | std::launch::deferred, [&, note = std::string(note),
+                                                                  contact = std::move(contact)] {
       return fluid_png(out.path(picture), c, *f.mesh, *fluid, deformed, contact,
                        c.name + ": fluid velocity magnitude", note);
     });
@@ -287,6 +289,10 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   if (c.fluid->method == "body-fitted") return run_body_fitted_case(c, options);
   PhaseTimes times;
   const Stopwatch total;
+  // The figures' fonts, loaded on the second core while the run meshes and solves.
+  const std::future<void> fonts =
+      c.output.png ? std::async(std::launch::async | std::launch::deferred, load_figure_fonts)
+                   : std::future<void>{};
   SetupCache local_cache;
   FsiSetup su = set_up(c, options.cache ? *options.cache : local_cache, times);
   const bool fluid_only = c.coupling.max_iterations == 0;
