@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <mutex>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -180,6 +181,12 @@ class UmfpackSolver final : public SparseDirectSolver {
 }  // namespace
 
 std::vector<int> metis_ordering(const SparseMatrix& A) {
+  // METIS (GKlib) keeps its random generator's state in globals, reseeded by each
+  // call: two orderings at once draw from one sequence and differ from run to run
+  // (found when the fluid's vertex order moved to a second thread: a fluid-alone
+  // run's force changed in its 16th digit between two runs of one case).
+  static std::mutex metis;
+  const std::lock_guard<std::mutex> one_at_a_time(metis);
   cholmod_common common;
   cholmod_start(&common);
   cholmod_sparse view{};

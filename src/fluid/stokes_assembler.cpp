@@ -39,14 +39,9 @@ std::vector<int> vertex_nested_dissection(const Mesh& mesh) {
 
 }  // namespace
 
-StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField& f, const FluidBoundaryConditions& bc)
+StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField& f,
+                                 const FluidBoundaryConditions& bc)
     : mesh_(mesh), mu_(mu) {
-  // The order is needed only by the first far-field factorisation, after this set-up,
-  // the point locator and the first χ: computed meanwhile on the second core (METIS
-  // was ~5 % of Table 1's row 13, 0.35 s, in a perf profile). Where no thread can be
-  // started, it is computed when first asked for.
-  vertex_order_ = std::async(std::launch::async | std::launch::deferred,
-                             [&mesh] { return vertex_nested_dissection(mesh); });
   const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
   geometry_.reserve(nt);
   loads_.reserve(nt);
@@ -253,6 +248,17 @@ void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) co
 // vertex graph (a third of the nodes, a ninth of the edges of the dof graph) METIS
 // is several times faster than on K, for a fill within a few per cent; it serves
 // every far-field factorisation of the run.
+// The order is needed only by the first far-field factorisation, after the solver's
+// set-up, the point locator and the first χ: computed meanwhile on the second core
+// (METIS was ~5 % of Table 1's row 13, 0.35 s, in a perf profile). Where no thread
+// can be started, it is computed when first asked for.
+void StokesAssembler::order_in_background() {
+  if (!dof_rank_.empty() || vertex_order_.valid()) return;
+  const Mesh& mesh = mesh_;
+  vertex_order_ = std::async(std::launch::async | std::launch::deferred,
+                             [&mesh] { return vertex_nested_dissection(mesh); });
+}
+
 const std::vector<int>& StokesAssembler::dof_rank() {
   if (!dof_rank_.empty()) return dof_rank_;
   const int nv = mesh_.num_vertices();

@@ -81,8 +81,9 @@ class StokesAssembler {
   void recover_bubble(int t, double kappa, FluidSolution& out) const;
 
   // A fill-reducing order of the unknowns (position of each reduced dof), computed
-  // once: METIS nested dissection of the vertex graph, started on a second thread
-  // when the assembler is built (see the definition).
+  // once: METIS nested dissection of the vertex graph. order_in_background() starts
+  // it on a second thread; dof_rank() waits for it (or computes it).
+  void order_in_background();
   const std::vector<int>& dof_rank();
 
  private:

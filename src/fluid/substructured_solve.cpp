@@ -7,10 +7,16 @@
 
 namespace fsi {
 
-SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing,
-                                       FluidSolution& out, double far_factor_budget_mb)
-    : assembler_(assembler), whole_(assembler, solver, timing, out), timing_(timing), out_(out),
-      far_factor_budget_mb_(far_factor_budget_mb) {}
+SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::string& solver,
+                                       FluidTiming& timing, FluidSolution& out,
+                                       double far_factor_budget_mb)
+    : assembler_(assembler),
+      whole_(assembler, solver, timing, out),
+      timing_(timing),
+      out_(out),
+      far_factor_budget_mb_(far_factor_budget_mb) {
+  assembler_.order_in_background();
+}
 
 // Through RegionSchurSolver: the far field was factorised when the near region was
 // chosen; per χ only the near region is, and the fields are updated there. The
@@ -18,6 +24,9 @@ SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::st
 // near region that would be most of D, or χ = 0 (nothing to substructure around):
 // the whole solve.
 void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
+  // The background order is joined before anything else may run METIS (the whole
+  // solve's analysis below, the structure's CHOLMOD): see metis_ordering.
+  assembler_.dof_rank();
   if (!too_large_ && (chi.array() != 0).any()) {
     if (first_of_run_) {
       first_of_run_ = false;
