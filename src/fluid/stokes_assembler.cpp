@@ -243,11 +243,6 @@ void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) co
   out.bubble.col(t) = bb.A_bb_inv * (loads_[t].F_b - bb.E * local);
 }
 
-// A fill-reducing order of the unknowns, computed once per mesh: METIS nested
-// dissection of the vertex graph, each vertex's v1, v2, p kept together. On the
-// vertex graph (a third of the nodes, a ninth of the edges of the dof graph) METIS
-// is several times faster than on K, for a fill within a few per cent; it serves
-// every far-field factorisation of the run.
 // The order is needed only by the first far-field factorisation, after the solver's
 // set-up, the point locator and the first χ: computed meanwhile on the second core
 // (METIS was ~5 % of Table 1's row 13, 0.35 s, in a perf profile). Where no thread
@@ -259,6 +254,11 @@ void StokesAssembler::order_in_background() {
                              [&mesh] { return vertex_nested_dissection(mesh); });
 }
 
+// A fill-reducing order of the unknowns, computed once per mesh: METIS nested
+// dissection of the vertex graph, each vertex's v1, v2, p kept together. On the
+// vertex graph (a third of the nodes, a ninth of the edges of the dof graph) METIS
+// is several times faster than on K, for a fill within a few per cent; it serves
+// every far-field factorisation of the run.
 const std::vector<int>& StokesAssembler::dof_rank() {
   if (!dof_rank_.empty()) return dof_rank_;
   const int nv = mesh_.num_vertices();

@@ -15,6 +15,7 @@ namespace fsi {
 namespace {
 
 constexpr int kMargin = 70, kBarWidth = 22, kBarSpace = 120, kTitle = 48;
+constexpr double kTitleFontSize = 17, kNoteFontSize = 13;  // also what load_figure_fonts loads
 
 std::string tick_label(double v, double step) {
   char text[32];
@@ -65,7 +66,7 @@ Figure::Figure(const WorldBox& box, int width, const std::string& title) : box_(
   cairo_set_source_rgb(cr_, 1, 1, 1);
   cairo_paint(cr_);
   cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-  cairo_set_font_size(cr_, 17);
+  cairo_set_font_size(cr_, kTitleFontSize);
   cairo_set_source_rgb(cr_, 0, 0, 0);
   cairo_move_to(cr_, left_, 28);
   cairo_show_text(cr_, title.c_str());
@@ -78,7 +79,7 @@ void load_figure_fonts() {
   cairo_text_extents_t extents;
   for (const auto weight : {CAIRO_FONT_WEIGHT_BOLD, CAIRO_FONT_WEIGHT_NORMAL}) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, weight);
-    cairo_set_font_size(cr, weight == CAIRO_FONT_WEIGHT_BOLD ? 17 : 13);
+    cairo_set_font_size(cr, weight == CAIRO_FONT_WEIGHT_BOLD ? kTitleFontSize : kNoteFontSize);
     cairo_text_extents(cr, "0", &extents);
   }
   cairo_destroy(cr);
@@ -94,7 +95,7 @@ double Figure::px(double x) const { return left_ + (x - box_.x_min) * scale_; }
 double Figure::py(double y) const { return top_ + (box_.y_max - y) * scale_; }
 
 void Figure::note(const std::string& text) {
-  cairo_set_font_size(cr_, 13);
+  cairo_set_font_size(cr_, kNoteFontSize);
   cairo_set_source_rgb(cr_, 0.25, 0.25, 0.25);
   cairo_move_to(cr_, left_, 48 + 17 * notes_++);
   cairo_show_text(cr_, text.c_str());

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
 #include "run/structure_outputs.hpp"
 
@@ -70,16 +71,6 @@ void draw_fluid(Figure& fig, const Case& c, const WorldBox& box, const Mesh& flu
 
 }  // namespace
 
-void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
-                     const FluidSolution& s, const Mesh& deformed_structure,
-                     const std::vector<int>& contact_vertices, const std::string& title,
-                     const std::string& note) {
-  const WorldBox box = fluid_figure_box(*c.fluid);
-  Figure fig(box, kFluidFigureWidth, title);
-  draw_fluid(fig, c, box, fluid_mesh, s, deformed_structure, contact_vertices, note);
-  fig.save_png(path);
-}
-
 std::string fluid_png(const std::string& name, const Case& c, const Mesh& fluid_mesh, const FluidSolution& s,
                       const Mesh& deformed_structure, const std::vector<int>& contact_vertices,
                       const std::string& title, const std::string& note) {
@@ -87,6 +78,14 @@ std::string fluid_png(const std::string& name, const Case& c, const Mesh& fluid_
   Figure fig(box, kFluidFigureWidth, title);
   draw_fluid(fig, c, box, fluid_mesh, s, deformed_structure, contact_vertices, note);
   return fig.png(name);
+}
+
+void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_mesh,
+                     const FluidSolution& s, const Mesh& deformed_structure,
+                     const std::vector<int>& contact_vertices, const std::string& title,
+                     const std::string& note) {
+  write_file_atomically(
+      path, fluid_png(path, c, fluid_mesh, s, deformed_structure, contact_vertices, title, note));
 }
 
 }  // namespace fsi
