@@ -5,10 +5,14 @@
 namespace fsi {
 
 PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
-                                 const FluidBoundaryConditions& bc, const std::string& solver)
-    : assembler_(mesh, mu, f, bc), solver_(solver),
-      strategy_(std::make_unique<WholeSolve>(assembler_, solver, timing_, solution_)),
-      chi_(Eigen::VectorXd::Zero(mesh.num_triangles())), eps_(eps) {}
+                                 const FluidBoundaryConditions& bc, const std::string& solver,
+                                 FluidFactorization factorization)
+    : assembler_(mesh, mu, f, bc, factorization == FluidFactorization::schur),
+      solver_(solver),
+      chi_(Eigen::VectorXd::Zero(mesh.num_triangles())),
+      eps_(eps) {
+  set_factorization(factorization);
+}
 
 void PenalisedStokes::set_factorization(FluidFactorization f, double far_factor_budget_mb) {
   if (solved_once_) throw std::logic_error("PenalisedStokes::set_factorization after a solve");

@@ -32,8 +32,12 @@ enum class FluidFactorization { schur, whole };
 
 class PenalisedStokes {
  public:
+  // `factorization` as set_factorization(factorization) right after, but a `schur`
+  // one starts ordering the unknowns (on the second core) before the set-up.
   PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
-                  const FluidBoundaryConditions& bc, const std::string& solver = kDefaultSparseSolver);
+                  const FluidBoundaryConditions& bc,
+                  const std::string& solver = kDefaultSparseSolver,
+                  FluidFactorization factorization = FluidFactorization::whole);
   // The strategy refers to the assembler, the timing and the solution held here.
   PenalisedStokes(const PenalisedStokes&) = delete;
   PenalisedStokes& operator=(const PenalisedStokes&) = delete;

@@ -37,6 +37,9 @@ struct ElementSystem {
 };
 using ElementFunction = std::function<ElementSystem(int t)>;
 using ElementDofs = std::function<std::array<int, 9>(int t)>;  // the dof part alone
+// rank[d]: the position of unknown d in a fill-reducing order of all unknowns; asked
+// for once the far field is assembled (it may be computed on another thread meanwhile).
+using DofRank = std::function<const std::vector<int>&()>;
 
 // What PenalisedStokes reads to split its own timing (the far field's set-up it
 // times itself).
@@ -48,10 +51,9 @@ struct RegionSchurTiming {
 class RegionSchurSolver {
  public:
   // n unknowns; near[t] marks the near triangles (at least one, not all); `load` is
-  // a constant load on the unknowns added to the elements' (tractions); rank[d]: the
-  // position of unknown d in a fill-reducing order of all unknowns (empty: METIS on
-  // the far field's matrix). Assembles and factorises the far field with element(t)
-  // for the triangles not near.
+  // a constant load on the unknowns added to the elements' (tractions); rank: the
+  // order of the unknowns (none, or an empty one: METIS on the far field's matrix).
+  // Assembles and factorises the far field with element(t) for the triangles not near.
   // far_factor_budget_mb: if the far field's factorisation takes more memory than
   // this (MUMPS's INFOG(22), MB), its factors are released once S and the condensed
   // load are known, and each expansion refactorises it (after releasing the near
@@ -59,8 +61,7 @@ class RegionSchurSolver {
   // largest run needs about half the memory for one more far-field factorisation.
   RegionSchurSolver(int n, const std::vector<char>& near, const ElementDofs& dofs,
                     const ElementFunction& element, const Eigen::VectorXd& load,
-                    const std::vector<int>& rank = {},
-                    const std::string& near_solver = kDefaultSparseSolver,
+                    const DofRank& rank = {}, const std::string& near_solver = kDefaultSparseSolver,
                     double far_factor_budget_mb = INFINITY);
 
   // x with K x = b, the near triangles assembled with element(t) now, in two steps.

@@ -40,8 +40,9 @@ std::vector<int> vertex_nested_dissection(const Mesh& mesh) {
 }  // namespace
 
 StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField& f,
-                                 const FluidBoundaryConditions& bc)
+                                 const FluidBoundaryConditions& bc, bool order_now)
     : mesh_(mesh), mu_(mu) {
+  if (order_now) order_in_background();  // it needs the mesh only
   const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
   geometry_.reserve(nt);
   loads_.reserve(nt);
@@ -244,9 +245,10 @@ void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) co
 }
 
 // The order is needed only by the first far-field factorisation, after the solver's
-// set-up, the point locator and the first χ: computed meanwhile on the second core
-// (METIS was ~5 % of Table 1's row 13, 0.35 s, in a perf profile). Where no thread
-// can be started, it is computed when first asked for.
+// set-up, the point locator, the first χ and the far field's assembly: computed
+// meanwhile on the second core (METIS on the vertex graph takes 20–25 ms at
+// hF = 0.01, 5–7 % of Table 1's row 13). Where no thread can be started, it is
+// computed when first asked for.
 void StokesAssembler::order_in_background() {
   if (!dof_rank_.empty() || vertex_order_.valid()) return;
   const Mesh& mesh = mesh_;

@@ -47,7 +47,10 @@ inline int fluid_dof(const std::array<int, 3>& tri, int k, int nv) {
 
 class StokesAssembler {
  public:
-  StokesAssembler(const Mesh& mesh, double mu, const VectorField& f, const FluidBoundaryConditions& bc);
+  // order_now: start order_in_background() before the set-up (the substructured
+  // solve needs the order; it then overlaps this constructor too).
+  StokesAssembler(const Mesh& mesh, double mu, const VectorField& f,
+                  const FluidBoundaryConditions& bc, bool order_now = false);
 
   const Mesh& mesh() const { return mesh_; }
   double mu() const { return mu_; }

@@ -22,11 +22,11 @@ SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::st
 // chosen; per χ only the near region is, and the fields are updated there. The
 // expansion to the far field is done only if `sampled` reaches beyond the region. A
 // near region that would be most of D, or χ = 0 (nothing to substructure around):
-// the whole solve.
+// the whole solve. The background order (dof_rank()) is joined before anything else
+// may run METIS (the whole solve's analysis, the structure's CHOLMOD: see
+// metis_ordering): by the first near region once its far field is assembled, by a
+// whole solve first.
 void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
-  // The background order is joined before anything else may run METIS (the whole
-  // solve's analysis below, the structure's CHOLMOD): see metis_ordering.
-  assembler_.dof_rank();
   if (!too_large_ && (chi.array() != 0).any()) {
     if (first_of_run_) {
       first_of_run_ = false;
@@ -40,6 +40,7 @@ void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTr
       return;
     }
   }
+  assembler_.dof_rank();
   whole_.solve(chi, eps, sampled);
   pending_expansion_ = false;
 }
@@ -201,7 +202,8 @@ void SubstructuredSolve::build_near_region(const Eigen::VectorXd& chi, double ep
   region_ = std::make_unique<RegionSchurSolver>(
       assembler_.unknowns(), near, [this](int t) { return assembler_.element_dofs(t); },
       [&](int t) { return assembler_.element_system(t, chi[t] / eps); }, assembler_.traction_load(),
-      assembler_.dof_rank(), whole_.name(), far_factor_budget_mb_);
+      [this]() -> const std::vector<int>& { return assembler_.dof_rank(); }, whole_.name(),
+      far_factor_budget_mb_);
   const double elapsed = clock.elapsed();
   timing_.factorization += elapsed;
   timing_.far_factorization += elapsed;

@@ -97,11 +97,14 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   FluidSetup s;
   s.mesh = std::make_unique<Mesh>(std::move(mesh));
   const Point f_F = f.f;
-  s.stokes = std::make_unique<PenalisedStokes>(*s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; },
-                                               box_boundary_conditions(*s.mesh, f));
-  // The substructured solve orders the unknowns on a second thread meanwhile.
-  s.stokes->set_factorization(f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur,
-                              f.keep_far_factors_mb);
+  // The substructured solve orders the unknowns on a second thread meanwhile, from
+  // the start of the solver's set-up.
+  const FluidFactorization factorization =
+      f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur;
+  s.stokes = std::make_unique<PenalisedStokes>(
+      *s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; }, box_boundary_conditions(*s.mesh, f),
+      kDefaultSparseSolver, factorization);
+  s.stokes->set_factorization(factorization, f.keep_far_factors_mb);
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
   return s;

@@ -33,6 +33,10 @@
 namespace fsi {
 namespace {
 
+const char* velocity_png_name(bool fluid_only) {
+  return fluid_only ? "fluid.png" : "fsi.png";
+}
+
 // ‖v_h‖ over the fluid triangles where χ = 1 (the region the penalty acts on).
 double velocity_l2_on_chi(const FluidField& field, const Mesh& fluid_mesh, const Eigen::VectorXd& chi) {
   Mesh region;
@@ -236,32 +240,44 @@ const FluidSolution* fluid_everywhere(const Case& c, FluidSetup& f, CouplingResu
   }
 }
 
+// The velocity picture (fsi.png, or fluid.png for the fluid alone), drawn and encoded
+// on a second thread as soon as the run is measured: it is the largest output (~35 ms
+// at hF = 0.01), and it overlaps the summary and the other files. `fluid` is complete
+// by then (fluid_everywhere), so the reads that follow (the obstacle forces) leave it
+// unchanged. Not valid if no picture is asked for.
+std::future<std::string> start_velocity_png(const Case& c, FsiSetup& su,
+                                            const CouplingResult& result,
+                                            const FluidSolution* fluid, const Mesh& deformed,
+                                            bool fluid_only) {
+  if (!(c.output.png && fluid)) return {};
+  char note[256];
+  std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s",
+                c.coupling.eps, c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h,
+                c.structure.h,
+                fluid_only ? "structure at rest"
+                           : (std::to_string(result.iterations) + " iterations" +
+                              (result.converged ? "" : " (not converged)"))
+                                 .c_str());
+  std::vector<int> contact =
+      fluid_only ? std::vector<int>{} : active_vertices(*su.s.solver, result.structure);
+  const Mesh& mesh = *su.f.mesh;
+  return std::async(
+      std::launch::async | std::launch::deferred,
+      [&c, &mesh, fluid, &deformed, note = std::string(note), contact = std::move(contact),
+       name = RunOutputs(c.output.dir).path(velocity_png_name(fluid_only))] {
+        return fluid_png(name, c, mesh, *fluid, deformed, contact,
+                         c.name + ": fluid velocity magnitude", note);
+      });
+}
+
 // Write: the fields where they exist everywhere (`fluid`: null draws no fluid),
-// history.csv, case.toml.
-// The velocity picture is drawn and encoded on a second thread while the other files
-// are written (measured: a row's outputs 67 → 55–60 ms at hF = 0.01); the files
-// themselves are written one at a time (an interrupted write removes its one
-// temporary: common/interrupt.hpp).
+// history.csv, case.toml, and the velocity picture `png` (start_velocity_png) once
+// it is drawn. The files themselves are written one at a time (an interrupted write
+// removes its one temporary: common/interrupt.hpp).
 void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const CouplingResult& result,
-                     const FluidSolution* fluid, const Mesh& deformed, bool fluid_only) {
+                     const FluidSolution* fluid, std::future<std::string>& png, bool fluid_only) {
   StructureSetup& s = su.s;
   FluidSetup& f = su.f;
-  const std::string picture = fluid_only ? "fluid.png" : "fsi.png";
-  std::future<std::string> png;
-  if (c.output.png && fluid) {
-    char note[256];
-    std::snprintf(note, sizeof note, "eps = %g, omega = %g (%s), hF = %g, hS = %g;  %s", c.coupling.eps,
-                  c.coupling.omega, c.coupling.scheme.c_str(), c.fluid->h, c.structure.h,
-                  fluid_only ? "structure at rest"
-                             : (std::to_string(result.iterations) + " iterations" +
-                                (result.converged ? "" : " (not converged)")).c_str());
-    std::vector<int> contact = fluid_only ? std::vector<int>{} : active_vertices(*s.solver, result.structure);
-    png = std::async(std::launch::async | std::launch::deferred, [&, note = std::string(note),
-                                                                  contact = std::move(contact)] {
-      return fluid_png(out.path(picture), c, *f.mesh, *fluid, deformed, contact,
-                       c.name + ": fluid velocity magnitude", note);
-    });
-  }
   if (c.output.vtu && fluid) {
     const bool fluid_vtu = out.write("fluid.vtu", [&](const std::string& p) {
       write_fluid_vtu(p, c, *f.mesh, *fluid, f.stokes->last_solution_chi());
@@ -278,7 +294,9 @@ void write_fsi_files(RunOutputs& out, const Case& c, FsiSetup& su, const Couplin
     out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, result.structure); });
   if (!fluid_only) out.write("history.csv", [&](const std::string& p) { write_history(p, result.history, false); });
   out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
-  if (png.valid()) out.write(picture, [&](const std::string& p) { write_file_atomically(p, png.get()); });
+  if (png.valid())
+    out.write(velocity_png_name(fluid_only),
+              [&](const std::string& p) { write_file_atomically(p, png.get()); });
 }
 
 }  // namespace
@@ -306,7 +324,9 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   const Eigen::VectorXd& u = result.structure.u;
   const Mesh deformed = displaced(su.s.mesh(), component(u, 0), component(u, 1));
   RunResult r;
-  r.measures = measure(c, su, result, deformed, fluid_only);
+  r.measures =
+      measure(c, su, result, deformed, fluid_only);  // may find the run failed: before the note
+  std::future<std::string> png = start_velocity_png(c, su, result, fluid, deformed, fluid_only);
   r.displacement = u;
   r.summary = fsi_summary(c, su, result, r.measures, deformed, options, fluid_only);
   r.report = fsi_report(c, result, r.measures, *su.f.stokes, fluid_only);
@@ -314,7 +334,7 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   if (!result.failure.empty()) r.failure = result.failure + " (the last good state is written in " + c.output.dir + "/)";
   auto files = [&](RunOutputs& out) {
     ScopedPhase phase(times, "output");
-    write_fsi_files(out, c, su, result, fluid, deformed, fluid_only);
+    write_fsi_files(out, c, su, result, fluid, png, fluid_only);
   };
   write_outputs(c, r, files, [&](Json& summary) { finish_timing(summary, r.measures, times, total); });
   return r;
