@@ -35,11 +35,12 @@ class Improver {
   }
   bool bad(int t) const { return quality(t_[t]) < target_; }
   bool try_flip(int t, int k);
+  // The smallest quality around `vertex` placed at `at`; stops early (returning it)
+  // once one is not above `floor`; −1 if an edge at the vertex would be longer than
+  // `reach` (a move never lengthens the longest edge: the size stays h(x)).
+  double star_quality(int vertex, const Point& at, double floor = -INFINITY,
+                      double reach = INFINITY) const;
   bool move(int vertex);
-  // A vertex's star gathered once per move: its triangles' other corners and its
-  // neighbours, so that each of the search's ~60 trial places costs the arithmetic
-  // alone (the search was half of meshing the box at hF = 0.01, measured).
-  struct Star;
   void build_stars();
   void build_neighbours();
 
@@ -51,49 +52,6 @@ class Improver {
   std::vector<int> star_begin_, star_;  // vertex → its triangles (CSR)
   // The triangle across the edge opposite corner k; −1 on the boundary.
   std::vector<std::array<int, 3>> neighbour_;
-};
-
-struct Improver::Star {
-  // Per triangle, the corners as they follow each other, the moving one marked by
-  // `self` (its position is the trial place).
-  struct Corners {
-    std::array<Point, 3> p;
-    int self;
-  };
-  std::vector<Corners> triangles;
-  std::vector<Point> neighbours;  // each corner other than the vertex, once per triangle
-
-  Star(const Improver& m, int vertex) {
-    for (int s = m.star_begin_[vertex]; s < m.star_begin_[vertex + 1]; ++s) {
-      Corners c{};
-      for (int k = 0; k < 3; ++k) {
-        const int w = m.t_[m.star_[s]][k];
-        if (w == vertex)
-          c.self = k;
-        else
-          c.p[k] = m.v_[w], neighbours.push_back(m.v_[w]);
-      }
-      triangles.push_back(c);
-    }
-  }
-
-  // The smallest quality around the vertex placed at `at`; stops early (returning it)
-  // once one is not above `floor`; −1 if an edge at the vertex would be longer than
-  // `reach` (a move never lengthens the longest edge: the size stays h(x)). Both
-  // early answers mean "no better than floor" to the search (floor ≥ −1 wherever a
-  // reach is given), so which of them comes first does not matter.
-  double quality(const Point& at, double floor = -INFINITY, double reach = INFINITY) const {
-    if (reach < INFINITY)
-      for (const Point& n : neighbours)
-        if ((n - at).norm() > reach) return -1;
-    double q = INFINITY;
-    for (std::size_t s = 0; s < triangles.size() && q > floor; ++s) {
-      std::array<Point, 3> p = triangles[s].p;
-      p[triangles[s].self] = at;
-      q = std::min(q, sine_squared_min_angle(p[0], p[1], p[2]));
-    }
-    return q;
-  }
 };
 
 void Improver::build_stars() {
@@ -174,6 +132,20 @@ int Improver::flip_pass() {
   return flips;
 }
 
+double Improver::star_quality(int vertex, const Point& at, double floor, double reach) const {
+  double q = INFINITY;
+  for (int s = star_begin_[vertex]; s < star_begin_[vertex + 1] && q > floor; ++s) {
+    std::array<Point, 3> p;
+    for (int k = 0; k < 3; ++k) {
+      const int w = t_[star_[s]][k];
+      p[k] = w == vertex ? at : v_[w];
+      if (w != vertex && (p[k] - at).norm() > reach) return -1;
+    }
+    q = std::min(q, sine_squared_min_angle(p[0], p[1], p[2]));
+  }
+  return q;
+}
+
 // Where a move to p lands: p itself, or its projection on the vertex's segment.
 Point constrain(const Freedom& f, const Point& p) {
   if (f.kind != Freedom::line) return p;
@@ -192,14 +164,13 @@ bool Improver::move(int vertex) {
   for (int s = star_begin_[vertex]; s < star_begin_[vertex + 1]; ++s)
     for (int k : t_[star_[s]])
       if (k != vertex) centroid += v_[k], ++count, reach = std::max(reach, (v_[k] - x).norm());
-  const Star star(*this, vertex);
-  double best = star.quality(x);
+  double best = star_quality(vertex, x);
   const double start = best;
   const double longest = reach;  // the search's step scale
   if (options_.size) reach = std::max(reach, options_.max_edge_over_size * (*options_.size)(x));
   if (count > 0) {
     const Point c = constrain(f, centroid / count);
-    const double q = star.quality(c, best, reach);
+    const double q = star_quality(vertex, c, best, reach);
     if (q > best) best = q, x = c;
   }
   static const double kDiagonal = std::numbers::sqrt2 / 2;
@@ -217,7 +188,7 @@ bool Improver::move(int vertex) {
     }
     Point next = x;
     for (int i = 0; i < n; ++i) {
-      const double q = star.quality(tries[i], best, reach);
+      const double q = star_quality(vertex, tries[i], best, reach);
       if (q > best) best = q, next = tries[i];
     }
     if (next == x) step /= 2;
