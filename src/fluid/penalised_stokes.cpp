@@ -6,12 +6,12 @@ namespace fsi {
 
 PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
                                  const FluidBoundaryConditions& bc, const std::string& solver,
-                                 FluidFactorization factorization)
+                                 FluidFactorization factorization, double far_factor_budget_mb)
     : assembler_(mesh, mu, f, bc, factorization == FluidFactorization::schur),
       solver_(solver),
       chi_(Eigen::VectorXd::Zero(mesh.num_triangles())),
       eps_(eps) {
-  set_factorization(factorization);
+  set_factorization(factorization, far_factor_budget_mb);
 }
 
 void PenalisedStokes::set_factorization(FluidFactorization f, double far_factor_budget_mb) {

@@ -32,12 +32,14 @@ enum class FluidFactorization { schur, whole };
 
 class PenalisedStokes {
  public:
-  // `factorization` as set_factorization(factorization) right after, but a `schur`
-  // one starts ordering the unknowns (on the second core) before the set-up.
+  // `factorization` and its budget as set_factorization(factorization, budget) right
+  // after, but a `schur` one starts ordering the unknowns (on the second core) before
+  // the set-up.
   PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
                   const FluidBoundaryConditions& bc,
                   const std::string& solver = kDefaultSparseSolver,
-                  FluidFactorization factorization = FluidFactorization::whole);
+                  FluidFactorization factorization = FluidFactorization::whole,
+                  double far_factor_budget_mb = INFINITY);
   // The strategy refers to the assembler, the timing and the solution held here.
   PenalisedStokes(const PenalisedStokes&) = delete;
   PenalisedStokes& operator=(const PenalisedStokes&) = delete;

@@ -103,8 +103,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
       f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur;
   s.stokes = std::make_unique<PenalisedStokes>(
       *s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; }, box_boundary_conditions(*s.mesh, f),
-      kDefaultSparseSolver, factorization);
-  s.stokes->set_factorization(factorization, f.keep_far_factors_mb);
+      kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
   return s;

@@ -353,8 +353,8 @@ RunResult run_fsi_case(const Case& c, const RunOptions& options) {
   const Eigen::VectorXd& u = result.structure.u;
   const Mesh deformed = displaced(su.s.mesh(), component(u, 0), component(u, 1));
   RunResult r;
-  r.measures =
-      measure(c, su, result, deformed, fluid_only);  // may find the run failed: before the note
+  // The measures may find the run failed: before the picture's note says how it ended.
+  r.measures = measure(c, su, result, deformed, fluid_only);
   std::future<std::string> png = start_velocity_png(c, su, result, fluid, deformed, fluid_only);
   r.displacement = u;
   r.summary = fsi_summary(c, su, result, r.measures, deformed, options, fluid_only);
