@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <stdexcept>
 
@@ -17,8 +18,21 @@ namespace fsi {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
+namespace {
+
+// The stored entries, by column: a matrix not yet compressed has gaps in its value array,
+// so the first nonZeros() values would not be its entries.
+bool all_finite(const SparseMatrix& A) {
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+      if (!std::isfinite(it.value())) return false;
+  return true;
+}
+
+}  // namespace
+
 void require_finite_matrix(const SparseMatrix& A, const std::string& who) {
-  if (!Eigen::Map<const Eigen::VectorXd>(A.valuePtr(), A.nonZeros()).allFinite())
+  if (!all_finite(A))
     throw SolverFailure(
         who +
         ": the matrix has a non-finite entry (NaN or inf), refused before its "

@@ -101,8 +101,12 @@ KktResiduals solver_kkt_residuals(const SparseMatrix& A, const Eigen::VectorXd& 
 }
 
 void require_finite(const SparseMatrix& M, const std::string& who, const std::string& what) {
-  // coeffs() holds the stored entries: an implicit zero is finite.
-  if (!M.coeffs().allFinite()) throw QpError(who + ": " + what + " has a non-finite entry");
+  // The stored entries, by column: a matrix not yet compressed has gaps in its value
+  // array, so coeffs() would not be its entries (Eigen asserts so; the instrumented
+  // build caught it). An implicit zero is finite.
+  for (int k = 0; k < M.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(M, k); it; ++it)
+      if (!std::isfinite(it.value())) throw QpError(who + ": " + what + " has a non-finite entry");
 }
 
 void require_finite(const Eigen::VectorXd& v, const std::string& who, const std::string& what) {

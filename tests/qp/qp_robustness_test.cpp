@@ -14,7 +14,7 @@
 #include "qp/ipopt_solver.hpp"
 #include "qp/random_qp.hpp"
 
-namespace fsi {
+namespace fsi::qp_robustness_test {
 namespace {
 
 using testing::random_qp;
@@ -238,5 +238,25 @@ TEST(QpRobustness, NonFiniteDataIsRefusedByName) {
   }
 }
 
+// A matrix filled by insert() and not yet compressed has gaps in its value array: its
+// entries are checked, not the array's first nonZeros() slots (those missed the last
+// columns and read the gaps; Eigen's assertion in the instrumented build found it).
+TEST(QpRobustness, AnUncompressedMatrixIsCheckedEntryByEntry) {
+  SparseMatrix A(4, 4), C(1, 4);
+  A.reserve(Eigen::VectorXi::Constant(4, 2));
+  for (int i = 0; i < 4; ++i) A.insert(i, i) = 1.0;
+  C.insert(0, 0) = 1.0;
+  ASSERT_FALSE(A.isCompressed());
+  ActiveSetSolver solver;
+  EXPECT_NO_THROW(solver.set_operator(A, C));
+  A.coeffRef(3, 3) = std::numeric_limits<double>::quiet_NaN();
+  try {
+    solver.set_operator(A, C);
+    ADD_FAILURE() << "a NaN in the last column was accepted";
+  } catch (const QpError& e) {
+    EXPECT_NE(std::string(e.what()).find("the operator A_S has a non-finite entry"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::qp_robustness_test
