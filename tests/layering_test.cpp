@@ -11,7 +11,7 @@
 #include <set>
 #include <string>
 
-namespace fsi {
+namespace fsi::layering_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -54,4 +54,4 @@ TEST(Layering, NoLayerIncludesALayerAboveIt) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::layering_test

@@ -7,7 +7,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::band_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -62,4 +62,4 @@ TEST(BandRun, AUserBoxAndATooNarrowBandIsSaid) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::band_run_test

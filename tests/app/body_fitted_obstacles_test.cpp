@@ -11,7 +11,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::body_fitted_obstacles_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -125,4 +125,4 @@ TEST(BodyFittedObstacles, RefusesAStructureThatComesTooCloseNamingTheObstacle) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::body_fitted_obstacles_test

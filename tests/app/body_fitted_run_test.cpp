@@ -9,7 +9,7 @@
 #include "support/cli.hpp"
 #include "support/msh.hpp"
 
-namespace fsi {
+namespace fsi::body_fitted_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -102,9 +102,9 @@ TEST(BodyFittedRun, RefusesContact) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::body_fitted_run_test
 
-namespace fsi {
+namespace fsi::body_fitted_run_test {
 namespace {
 
 TEST(BodyFittedRun, ConvergeRunsItsLevelsAndReportsTheLoad) {
@@ -130,9 +130,9 @@ TEST(BodyFittedRun, ConvergeRunsItsLevelsAndReportsTheLoad) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::body_fitted_run_test
 
-namespace fsi {
+namespace fsi::body_fitted_run_test {
 namespace {
 
 TEST(BodyFittedRun, RefusesAStructureMeshClampedOffTheWall) {
@@ -161,4 +161,4 @@ TEST(BodyFittedRun, RefusesAStructureMeshClampedOffTheWall) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::body_fitted_run_test

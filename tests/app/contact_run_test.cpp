@@ -6,7 +6,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::contact_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -56,4 +56,4 @@ TEST(ContactRun, WritesSummaryVtuAndPng) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::contact_run_test

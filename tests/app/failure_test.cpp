@@ -10,7 +10,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::failure_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -138,4 +138,4 @@ TEST(Failure, OutPathsAreTakenAsTheyAre) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::failure_test

@@ -17,7 +17,7 @@
 #include "run/fluid_outputs.hpp"
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::figure_content_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -155,4 +155,4 @@ TEST(FigureContent, AGeoStructureAndTwoHolesAreDrawnWhereTheyAre) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::figure_content_test

@@ -10,7 +10,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::fluid_alone_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,4 +83,4 @@ TEST(FluidAloneRun, TheFlowPastThePapersDiskConverges) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::fluid_alone_run_test

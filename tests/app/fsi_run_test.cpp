@@ -10,7 +10,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::fsi_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -197,6 +197,20 @@ TEST(FsiRun, FluidAloneWhenTheCouplingIsSwitchedOff) {
   const std::string vtu = testing::slurp(dir / "res/fluid.vtu");
   for (const char* field : {"velocity", "pressure", "chi", "velocity_magnitude"})
     EXPECT_NE(vtu.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
+  fs::remove_all(dir);
+}
+
+// Outputs switched off are neither written nor named in the one-paragraph report.
+TEST(FsiRun, FluidAloneWithoutOutputsNamesOnlyTheSummary) {
+  const fs::path dir = testing::scratch_dir("fluid-only-no-outputs");
+  const testing::CliRun r = testing::run_cli(
+      "run " + kCoarse + " --set coupling.max_iterations=0 --set output.vtu=false --set output.png=false --out res -q",
+      dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "res/fluid.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "res/fluid.png"));
+  EXPECT_NE(r.out.find("fluid alone around the structure at rest"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(summary.json)."), std::string::npos) << r.out;
   fs::remove_all(dir);
 }
 
@@ -395,4 +409,4 @@ TEST(FsiRun, AFlapBetweenTwoDiskHolesConvergesWithEachDisksForce) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::fsi_run_test

@@ -14,7 +14,7 @@
 #include "support/cli.hpp"
 #include "support/msh.hpp"
 
-namespace fsi {
+namespace fsi::polygon_hole_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -156,4 +156,4 @@ TEST(PolygonHoleRun, AFluidMeshWhoseHolesAreNotTheObstaclesIsRefused) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::polygon_hole_run_test

@@ -11,7 +11,7 @@
 #include "support/cli.hpp"
 #include "support/vtu_reader.hpp"
 
-namespace fsi {
+namespace fsi::probes_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -128,4 +128,4 @@ TEST(ProbesRun, CoupledHistoryEndsWithTheSummarysValue) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::probes_run_test

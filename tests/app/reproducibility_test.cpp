@@ -8,7 +8,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::reproducibility_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -68,4 +68,4 @@ TEST(Reproducibility, RunsAreBitIdenticalWithOneOrTwoThreads) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::reproducibility_test

@@ -9,7 +9,7 @@
 #include "support/cli.hpp"
 #include "support/hertz_case.hpp"
 
-namespace fsi {
+namespace fsi::structure_shape_run_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -89,4 +89,4 @@ TEST(StructureShapeRun, TheContactExamplesRun) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::structure_shape_run_test

@@ -7,7 +7,7 @@
 
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::sweep_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,7 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRows{"open_quote", "coupling.eps,coupling.scheme\n1e-4,\"aitken\n", {"rows.csv:2", "quote"}},
         BadRows{"bad_value_in_row_2", "coupling.eps,coupling.omega\n1e-4,0.1\n1e-5,7\n", {"rows.csv: row 2", "coupling.omega"}},
         BadRows{"missing_mesh_in_row_2", "coupling.eps,fluid.mesh\n1e-4,\n1e-5,nowhere.msh\n", {"rows.csv: row 2", "fluid.mesh", "nowhere.msh"}}),
-    [](const auto& info) { return info.param.label; });
+    [](const auto& param_info) { return param_info.param.label; });
 
 // Rows that reach their iteration limit make the sweep's exit status 3 (as a run's);
 // each row is marked, and the sweep's summary.json says how each ended.
@@ -114,4 +114,4 @@ TEST(Sweep, ARerunWithFewerRowsLeavesNoStaleRows) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::sweep_test

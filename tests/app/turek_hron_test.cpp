@@ -13,7 +13,7 @@
 #include "support/cli.hpp"
 #include "support/vtu_reader.hpp"
 
-namespace fsi {
+namespace fsi::turek_hron_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -72,4 +72,4 @@ TEST(TurekHron, Csm1TipWithP2) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::turek_hron_test

@@ -11,7 +11,7 @@
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 
-namespace fsi {
+namespace fsi::format_and_signals_test {
 namespace {
 
 // A range error must show the value the user gave, not a rounding of it:
@@ -51,4 +51,4 @@ TEST(Signals, ASecondSignalRemovesTheTemporaryFileAndKills) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::format_and_signals_test

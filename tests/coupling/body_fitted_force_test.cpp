@@ -15,7 +15,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/structure_outline.hpp"
 
-namespace fsi {
+namespace fsi::body_fitted_force_test {
 namespace {
 
 // An exact Stokes solution, −μΔv + ∇p = f, div v = 0:
@@ -179,4 +179,4 @@ TEST(HarmonicExtension, TranslatesAMeshWhoseBoundaryTranslates) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::body_fitted_force_test

@@ -5,7 +5,7 @@
 
 #include "coupling/fixed_point.hpp"
 
-namespace fsi {
+namespace fsi::convergence_warning_test {
 namespace {
 
 CouplingResult converged_with(const std::vector<double>& increments) {
@@ -66,4 +66,4 @@ TEST(ConvergenceWarning, NamesAStopWhoseIncrementIsTheDisplacementItself) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::convergence_warning_test

@@ -13,7 +13,7 @@
 #include "io/case.hpp"
 #include "run/structure_setup.hpp"
 
-namespace fsi {
+namespace fsi::fixed_point_loop_test {
 namespace {
 
 class LinearMap final : public CoupledMap {
@@ -95,4 +95,4 @@ TEST(FixedPointLoop, AitkenIsExactForAScaledIdentityInEachWindow) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::fixed_point_loop_test

@@ -13,7 +13,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::force_transfer_test {
 namespace {
 
 // μ_F, ε and f_F of eq. (33); a test isolates a term by zeroing the others (1/ε = 0
@@ -283,4 +283,4 @@ TEST(ForceTransfer, SamplesOutsideTheFluidDomainAtTheNearestPoint) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::force_transfer_test

@@ -15,7 +15,7 @@
 #include "run/region_hint.hpp"
 #include "run/structure_setup.hpp"
 
-namespace fsi {
+namespace fsi::fsi_test {
 namespace {
 
 struct Coupled {
@@ -308,4 +308,4 @@ TEST(Fsi, InterruptStopsAfterTheCurrentIteration) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::fsi_test

@@ -12,7 +12,7 @@
 #include "solid/elasticity.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::large_force_test {
 namespace {
 
 constexpr double kMu = 0.0035, kEps = 1e-3;
@@ -85,4 +85,4 @@ TEST(LargeForce, TendsToTheSmallFormAsTheDisplacementVanishes) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::large_force_test

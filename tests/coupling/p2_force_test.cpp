@@ -21,7 +21,7 @@
 #include "support/structured_mesh.hpp"
 #include "solid/hyperelastic.hpp"
 
-namespace fsi {
+namespace fsi::p2_force_test {
 namespace {
 
 constexpr double kMu = 0.7, kEps = 0.5;  // all terms of comparable size
@@ -379,4 +379,4 @@ TEST(P2Force, LargeUnderACurvedDeformationIsTheDirectIntegralOnTheDeformedBody) 
 }  // namespace curved
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::p2_force_test

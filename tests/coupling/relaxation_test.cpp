@@ -11,7 +11,7 @@
 #include "solid/elasticity.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::relaxation_test {
 namespace {
 
 Eigen::SparseMatrix<double> identity(int n) {
@@ -200,4 +200,4 @@ TEST(Relaxation, AtAWindowsEndIqnIlsDropsOrReusesItsColumns) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::relaxation_test

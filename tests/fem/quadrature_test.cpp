@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace fsi {
+namespace fsi::quadrature_test {
 namespace {
 
 // ∫_T λ1^a λ2^b λ3^c = 2|T| a! b! c! / (a+b+c+2)!  (exact formula to test against).
@@ -44,4 +44,4 @@ TEST(Quadrature, TriangleRuleIntegratesBarycentricMonomials) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::quadrature_test

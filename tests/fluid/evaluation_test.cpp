@@ -10,7 +10,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::evaluation_test {
 namespace {
 
 // The paper's box at hF = 0.02 with arbitrary nodal values and bubble coefficients.
@@ -219,4 +219,4 @@ TEST(Chi, TriangleIntersectionAreas) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::evaluation_test

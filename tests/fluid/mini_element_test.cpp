@@ -8,7 +8,7 @@
 
 #include "fem/quadrature.hpp"
 
-namespace fsi {
+namespace fsi::mini_element_test {
 namespace {
 
 const P1Triangle kT(Point(0.1, -0.2), Point(0.7, 0.05), Point(0.25, 0.6));
@@ -129,4 +129,4 @@ TEST(MiniElement, CondensationEqualsSolvingWithTheBubbles) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::mini_element_test

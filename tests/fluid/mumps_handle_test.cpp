@@ -12,7 +12,7 @@
 #include "common/errors.hpp"
 #include "fluid/mumps_schur.hpp"
 
-namespace fsi {
+namespace fsi::mumps_handle_test {
 namespace {
 
 bool contains(const std::string& text, const std::string& part) {
@@ -97,4 +97,4 @@ TEST(MumpsSchur, RefusesNonFiniteData) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::mumps_handle_test

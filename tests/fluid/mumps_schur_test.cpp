@@ -9,7 +9,7 @@
 #include "fluid/penalised_stokes.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::mumps_schur_test {
 namespace {
 
 TEST(MumpsSchur, EqualsTheDenseSchurComplementAndSolvesThroughIt) {
@@ -99,4 +99,4 @@ TEST(MumpsSchur, RefusesAnEmptyOrFullInterface) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::mumps_schur_test

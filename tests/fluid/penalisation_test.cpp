@@ -16,7 +16,7 @@
 #include "run/fluid_setup.hpp"
 #include "run/structure_setup.hpp"
 
-namespace fsi {
+namespace fsi::penalisation_test {
 namespace {
 
 struct Norms {
@@ -76,4 +76,4 @@ TEST(Penalisation, VelocityOnTheExactStructureHasAFloorSetByTheFluidMesh) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::penalisation_test

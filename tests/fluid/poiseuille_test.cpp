@@ -15,7 +15,7 @@
 #include "support/stokes_norms.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::poiseuille_test {
 namespace {
 
 constexpr double L = 4.0, U = 1.5, mu = 0.0035;
@@ -69,4 +69,4 @@ TEST(Poiseuille, TractionFreeOutletGivesPoiseuilleUpstream) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::poiseuille_test

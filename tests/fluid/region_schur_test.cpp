@@ -13,7 +13,7 @@
 #include "fem/point_locator.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::region_schur_test {
 namespace {
 
 struct Box {
@@ -279,4 +279,4 @@ TEST(RegionSchur, WithoutAStructureSolvesWhole) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::region_schur_test

@@ -12,7 +12,7 @@
 #include "support/stokes_norms.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::stokes_mms_test {
 namespace {
 
 constexpr double pi = std::numbers::pi;
@@ -102,4 +102,4 @@ TEST(StokesMms, BoxWithHoleConvergesAtMiniElementRates) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::stokes_mms_test

@@ -11,7 +11,7 @@
 
 #include "common/errors.hpp"
 
-namespace fsi {
+namespace fsi::case_test {
 namespace {
 
 TEST(Case, DefaultsAreThePapersSection72) {
@@ -160,9 +160,9 @@ TEST(Case, FuzzRegressionsGiveACaseOrAnInputError) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::case_test
 
-namespace fsi {
+namespace fsi::case_test {
 namespace {
 
 // Every shipped case reloads to itself from its resolved TOML, bit for bit (the
@@ -201,4 +201,4 @@ TEST(Case, ProbesRoundTripInTheirOrder) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::case_test

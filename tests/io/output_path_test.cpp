@@ -10,7 +10,7 @@
 
 #include "common/errors.hpp"
 
-namespace fsi {
+namespace fsi::output_path_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -45,4 +45,4 @@ TEST(OutputPath, TheFileSystemCheckCreatesNothing) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::output_path_test

@@ -12,7 +12,7 @@
 #include "io/figure.hpp"
 #include "io/png.hpp"
 
-namespace fsi {
+namespace fsi::raster_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,6 +65,16 @@ TEST(Raster, KeepsToTheClip) {
       EXPECT_EQ(pixels[y * w + x] != 0, x >= 5 && x < 15 && y >= 5 && y < 15) << x << "," << y;
 }
 
+// A triangle of no area (a structure folded flat, three vertices on a pixel row) covers
+// no pixel centre and is skipped, not divided by its zero area; one with a NaN vertex too.
+TEST(Raster, SkipsDegenerateTriangles) {
+  const int w = 20, h = 20;
+  std::vector<std::uint32_t> pixels(w * h, 0);
+  paint_field({pixels.data(), 4 * w, {0, 0, w, h}}, {{2, 5.5}, {10, 5.5}, {18, 5.5}, {NAN, 3}},
+              {{0, 1, 2}, {0, 1, 3}}, {0.5, 0.5, 0.5, 0.5});
+  for (std::uint32_t p : pixels) EXPECT_EQ(p, 0u);
+}
+
 TEST(Png, IsLossless) {
   cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 37, 23);
   cairo_surface_flush(s);
@@ -94,4 +104,4 @@ TEST(Png, IsLossless) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::raster_test

@@ -10,7 +10,7 @@
 
 #include "support/vtu_reader.hpp"
 
-namespace fsi {
+namespace fsi::vtu_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -89,4 +89,4 @@ TEST(Vtu, LargeArraysInSeveralZlibBlocks) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::vtu_test

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <random>
 
-namespace fsi {
+namespace fsi::angle_improvement_test {
 namespace {
 
 double min_angle(const std::vector<Point>& v, const std::vector<std::array<int, 3>>& t) {
@@ -111,4 +111,4 @@ TEST(AngleImprovement, NeverLowersTheSmallestAngleWhateverTheTarget) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::angle_improvement_test

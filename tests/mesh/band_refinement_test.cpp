@@ -8,7 +8,7 @@
 
 #include "mesh/gmsh_io.hpp"
 
-namespace fsi {
+namespace fsi::band_refinement_test {
 namespace {
 
 double longest_edge(const Mesh& m, int t) {
@@ -91,4 +91,4 @@ TEST(BandRefinement, NoBandWithoutHNear) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::band_refinement_test

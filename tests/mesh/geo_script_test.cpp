@@ -18,7 +18,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "support/cli.hpp"
 
-namespace fsi {
+namespace fsi::geo_script_test {
 namespace {
 
 std::string refusal(const std::string& text) {
@@ -152,4 +152,4 @@ TEST(GeoScript, TheScriptsErrorsComeBackInItsWords) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::geo_script_test

@@ -19,8 +19,9 @@
 #include <thread>
 
 #include "mesh/mesh_error.hpp"
+#include "support/sanitizers.hpp"
 
-namespace fsi {
+namespace fsi::gmsh_child_test {
 namespace {
 
 const ChildTask kTask{"testing the child", "it had a small cap"};
@@ -73,7 +74,7 @@ TEST(GmshChild, BadAllocIsOutOfMemory) {
 }
 
 TEST(GmshChild, TheMemoryCapStopsARunawayAllocation) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(FSICONTACT_ASAN)
   GTEST_SKIP() << "AddressSanitizer's allocator dies instead of throwing std::bad_alloc";
 #endif
   const std::string m = failure_of(
@@ -133,8 +134,8 @@ TEST(GmshChild, ExitInTheChildRunsNoneOfTheParentsExitHandlers) {
 }
 
 TEST(GmshChild, PrintsNothingToOurTerminal) {
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
   const auto out = run_in_child(
       [] {
         std::cout << "Info: to stdout" << std::endl;
@@ -144,8 +145,8 @@ TEST(GmshChild, PrintsNothingToOurTerminal) {
         return bytes("ok");
       },
       kTask, {});
-  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
-  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(::testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   EXPECT_EQ(out, bytes("ok"));
 }
 
@@ -181,4 +182,4 @@ TEST(GmshChild, SignalsToTheParentDoNotBreakTheCall) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::gmsh_child_test

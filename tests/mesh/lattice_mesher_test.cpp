@@ -14,7 +14,7 @@
 
 #include "mesh/generated_mesh.hpp"
 
-namespace fsi {
+namespace fsi::lattice_mesher_test {
 namespace {
 
 const FluidGeometry kBox{0.41, 0.5, 0.5, 0.2, -0.07, 0.05, 0.01};
@@ -192,4 +192,4 @@ TEST(LatticeMesher, GmshStaysAvailable) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::lattice_mesher_test

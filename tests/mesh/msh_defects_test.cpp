@@ -8,8 +8,9 @@
 
 #include "mesh/gmsh_io.hpp"
 #include "support/cli.hpp"
+#include "support/sanitizers.hpp"
 
-namespace fsi {
+namespace fsi::msh_defects_test {
 namespace {
 
 const std::string kDir = FSICONTACT_SOURCE_DIR "/tests/data/fuzz-msh/";
@@ -28,7 +29,7 @@ std::vector<Defect> defects() {
       {"not-a-mesh", {"is not a Gmsh mesh file", "$MeshFormat"}},
       {"leading-blank-line", {"is not a Gmsh mesh file"}},
       {"truncated", {"Gmsh failed while reading it", "Could not read nodes"}},
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(FSICONTACT_ASAN)
       // AddressSanitizer's operator new aborts on exhaustion instead of throwing
       // std::bad_alloc (whatever allocator_may_return_null says): the child's end is
       // still a MeshError, with the signal.
@@ -154,4 +155,4 @@ TEST(MshFile, AGroupOfTheWrongDimensionIsNamed) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::msh_defects_test

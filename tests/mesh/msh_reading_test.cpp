@@ -4,7 +4,7 @@
 
 #include "mesh/gmsh_io.hpp"
 
-namespace fsi {
+namespace fsi::msh_reading_test {
 namespace {
 
 const std::string kSeeds = FSICONTACT_SOURCE_DIR "/tests/data/fuzz-msh/";
@@ -94,4 +94,4 @@ TEST(MshReading, TooShortALimitStopsTheReader) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::msh_reading_test

@@ -12,7 +12,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/polygon.hpp"
 
-namespace fsi {
+namespace fsi::polygon_hole_test {
 namespace {
 
 constexpr double kH = 0.02;
@@ -117,4 +117,4 @@ TEST(PolygonHoles, TheBodyFittedMeshHasTheSameHoles) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::polygon_hole_test

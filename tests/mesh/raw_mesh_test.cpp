@@ -9,7 +9,7 @@
 
 #include "mesh/mesh_error.hpp"
 
-namespace fsi {
+namespace fsi::raw_mesh_test {
 namespace {
 
 RawMesh sample() {
@@ -52,4 +52,4 @@ TEST(RawMesh, AHugeCountIsRefusedBeforeAllocating) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::raw_mesh_test

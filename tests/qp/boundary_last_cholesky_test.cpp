@@ -12,7 +12,7 @@
 #include "solid/p2_elasticity.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::boundary_last_cholesky_test {
 namespace {
 
 struct Problem {
@@ -72,4 +72,4 @@ TEST(BoundaryLastCholesky, FillStaysNearAmdsOnTheWholeMatrix) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::boundary_last_cholesky_test

@@ -7,7 +7,7 @@
 #include "qp/ipopt_solver.hpp"
 #include "qp/random_qp.hpp"
 
-namespace fsi {
+namespace fsi::qp_solvers_test {
 namespace {
 
 using testing::random_qp;
@@ -141,4 +141,4 @@ TEST(QpSolvers, RejectAnIndefiniteOperator) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::qp_solvers_test

@@ -21,7 +21,7 @@
 #include "support/stokes_norms.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::box_sides_test {
 namespace {
 
 constexpr double kMu = 0.0035, kVmax = 1.5;
@@ -173,4 +173,4 @@ TEST(BoxSides, PoiseuilleFlowFromEachSideConvergesToTheClosedForm) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::box_sides_test

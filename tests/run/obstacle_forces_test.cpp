@@ -19,7 +19,7 @@
 #include "support/channel.hpp"
 #include "support/traction.hpp"
 
-namespace fsi {
+namespace fsi::obstacle_forces_test {
 namespace {
 
 constexpr double kMu = 0.0035, kR = 0.1, kYc = 0.2;
@@ -104,4 +104,4 @@ TEST(ObstacleForces, AtRestEachHoleFeelsItsBuoyancyExactly) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::obstacle_forces_test

@@ -11,7 +11,7 @@
 #include "run/csv.hpp"
 #include "run/output_dir.hpp"
 
-namespace fsi {
+namespace fsi::outputs_and_rows_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -76,4 +76,4 @@ TEST(Csv, QuotesCommasAndDoubledQuotes) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::outputs_and_rows_test

@@ -4,7 +4,7 @@
 #include "io/case.hpp"
 #include "run/structure_setup.hpp"
 
-namespace fsi {
+namespace fsi::paper_7_1_test {
 namespace {
 
 std::string case_file(const std::string& name) {
@@ -107,4 +107,4 @@ TEST(Paper71, CoarseAndFineMeshesAgree) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::paper_7_1_test

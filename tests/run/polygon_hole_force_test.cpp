@@ -20,7 +20,7 @@
 #include "support/channel.hpp"
 #include "support/traction.hpp"
 
-namespace fsi {
+namespace fsi::polygon_hole_force_test {
 namespace {
 
 constexpr double kMu = 0.0035;
@@ -90,4 +90,4 @@ TEST(PolygonHoleForce, TheTractionIntegralApproachesTheResidualForce) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::polygon_hole_force_test

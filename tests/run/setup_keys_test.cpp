@@ -11,7 +11,7 @@
 #include "run/setup_cache.hpp"
 #include "run/summary.hpp"
 
-namespace fsi {
+namespace fsi::setup_keys_test {
 namespace {
 
 // A valid value different from the §7.2 default, for each key: numbers 1% larger.
@@ -115,4 +115,4 @@ TEST(SetupKeys, TheInflowIsAppliedOnTheLabelSigma4) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::setup_keys_test

@@ -11,7 +11,7 @@
 #include "solid/contact_solver.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::contact_test {
 namespace {
 
 // Closed forms on the disk's arc, t = x − x0:
@@ -177,4 +177,4 @@ TEST(BlockOnFloor, IsRejectedWhenNothingPreventsRigidMotion) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::contact_test

@@ -10,7 +10,7 @@
 #include "support/norms.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::elasticity_mms_test {
 namespace {
 
 constexpr double a = 1.3, b = 0.7, c = 1.1, d = 0.9;
@@ -101,4 +101,4 @@ TEST(ElasticityMms, ConvergesAtTheP1RatesOnGeneratedMeshes) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::elasticity_mms_test

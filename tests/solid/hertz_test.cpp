@@ -23,7 +23,7 @@
 #include "run/structure_setup.hpp"
 #include "support/hertz_case.hpp"
 
-namespace fsi {
+namespace fsi::hertz_test {
 namespace {
 
 constexpr double kR = 1, kE = 1, kNu = 0.3;
@@ -130,4 +130,4 @@ TEST(Hertz, HalfWidthAndPeakPressureConvergeToTheClosedForm) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::hertz_test

@@ -19,7 +19,7 @@
 #include "support/norms.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::hyperelastic_test {
 namespace {
 
 const Lame kLame = Lame::from_young_poisson(3.0e5, 0.3);
@@ -304,4 +304,4 @@ TEST(Hyperelastic, NewtonWithContactTendsToTheLinearAnswerForSmallLoads) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::hyperelastic_test

@@ -13,7 +13,7 @@
 #include "solid/normal_contact.hpp"
 #include "solid/relinearised_contact.hpp"
 
-namespace fsi {
+namespace fsi::normal_contact_test {
 namespace {
 
 const std::string kFig5 = std::string(FSICONTACT_SOURCE_DIR) + "/cases/paper-7.1-fig5-coarse.toml";
@@ -100,4 +100,4 @@ TEST(NormalContact, AllBoundaryCandidatesFindTheSameContact) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::normal_contact_test

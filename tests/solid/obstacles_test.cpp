@@ -11,7 +11,7 @@
 #include "solid/relinearised_contact.hpp"
 #include "solid/signed_distance.hpp"
 
-namespace fsi {
+namespace fsi::obstacles_test {
 namespace {
 
 TEST(SignedDistance, PolygonInsideOutsideEdgeAndCorner) {
@@ -153,4 +153,4 @@ normal = [0.0, 1.0]
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::obstacles_test

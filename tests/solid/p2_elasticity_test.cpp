@@ -20,7 +20,7 @@
 #include "support/newton_order.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::p2_elasticity_test {
 namespace {
 
 const Lame kLame = Lame::from_young_poisson(3.0e5, 0.3);
@@ -214,4 +214,4 @@ TEST(P2Elasticity, TheContactSolversNewtonAgreesWithAPlainNewton) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::p2_elasticity_test

@@ -15,7 +15,7 @@
 #include "solid/p2_elasticity.hpp"
 #include "support/structured_mesh.hpp"
 
-namespace fsi {
+namespace fsi::p2_structure_test {
 namespace {
 
 const Lame kLame = Lame::from_young_poisson(3.0e5, 0.3);
@@ -123,4 +123,4 @@ TEST(P2Structure, TheThinBeamsCoarseAndFineMeshesAgreeWithP2) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::p2_structure_test

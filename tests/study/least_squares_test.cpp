@@ -7,7 +7,7 @@
 
 #include "study/least_squares.hpp"
 
-namespace fsi {
+namespace fsi::least_squares_test {
 namespace {
 
 std::vector<double> sizes(int n, double r) {
@@ -60,4 +60,4 @@ TEST(LeastSquares, ClampsTheOrderOfAWanderingSequence) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::least_squares_test

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace fsi {
+namespace fsi::richardson_test {
 namespace {
 
 // φ(h) = φ* + C h^p exactly: the observed order is p, the extrapolation φ*, and the
@@ -77,4 +77,4 @@ TEST(Richardson, NamesOscillationDivergenceAndExactness) {
 }
 
 }  // namespace
-}  // namespace fsi
+}  // namespace fsi::richardson_test
