@@ -16,8 +16,6 @@ namespace {
 // written with 10 significant digits pass, an obstacle moved by a mesh size fails.
 constexpr double kHoleTolerance = 1e-6;
 
-std::string at(const Point& p) { return point_text(p); }
-
 std::string hole_name(std::size_t i) { return "Sigma_5_" + std::to_string(i + 1); }
 
 std::string obstacle_key(std::size_t i) { return "obstacles[" + std::to_string(i + 1) + "]"; }
@@ -64,8 +62,9 @@ void check_hole(const Case& c, const Mesh& mesh, std::size_t i) {
     const Point &a = mesh.vertices[e.v[0]], &b = mesh.vertices[e.v[1]];
     const double off = off_boundary(o, a, b);
     if (!(off <= tol))
-      refuse(c, "its hole " + hole_name(i) + " has the edge " + at(a) + " - " + at(b) + ", " + shortest(off) +
-                    " off the boundary of " + obstacle_key(i) + " (a " + o.shape + ")",
+      refuse(c,
+             "its hole " + hole_name(i) + " has the edge " + point_text(a) + " - " + point_text(b) + ", " +
+                 shortest(off) + " off the boundary of " + obstacle_key(i) + " (a " + o.shape + ")",
              std::string(kAllowed) + " within " + shortest(tol));
   }
 }
@@ -96,7 +95,7 @@ void check_mesh_holes(const Case& c, const Mesh& mesh) {
     const Point g = (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]]) / 3.0;
     for (std::size_t i = 0; i < c.obstacles.size(); ++i)
       if (inside(c.obstacles[i], g))
-        refuse(c, "covers " + obstacle_key(i) + ": its triangle at " + at(g) + " lies inside it",
+        refuse(c, "covers " + obstacle_key(i) + ": its triangle at " + point_text(g) + " lies inside it",
                "D = the box minus every obstacle of [[obstacles]] (each a hole)");
   }
 }
