@@ -21,8 +21,9 @@ deps:
 
 # Configured once (until its build files exist: a configuration that failed is redone);
 # later CMakeLists changes re-run CMake from the build itself.
+configured = test -f $(1)/build.ninja || test -f $(1)/Makefile
 configure: deps
-	@test -f $(BUILD)/build.ninja || test -f $(BUILD)/Makefile || \
+	@$(call configured,$(BUILD)) || \
 	  cmake -S . -B $(BUILD) $(GENERATOR) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) > /dev/null
 
 # The program and the Gmsh plugin it loads: all that `make demo` needs.
@@ -55,7 +56,7 @@ ASAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
   LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 instrumented-build: deps
-	@test -f $(INSTRUMENTED)/build.ninja || test -f $(INSTRUMENTED)/Makefile || cmake -S . -B $(INSTRUMENTED) $(GENERATOR) \
+	@$(call configured,$(INSTRUMENTED)) || cmake -S . -B $(INSTRUMENTED) $(GENERATOR) \
 	  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Instrumented -DFSICONTACT_FUZZ=ON \
 	  -DFSICONTACT_BUILD_BENCH=OFF -DCMAKE_UNITY_BUILD=OFF > /dev/null
 	@cmake --build $(INSTRUMENTED) -j $(JOBS)
