@@ -43,9 +43,10 @@ using namespace case_detail;
 
 }  // namespace
 
-// "fixed" → 0; "h^p" → p for 0 < p <= 4; anything else: none.
+// "fixed" → 0; "layer" → 2 (ε ∝ h²); "h^p" → p for 0 < p <= 4; anything else: none.
 std::optional<double> eps_rule_power(const std::string& rule) {
   if (rule == "fixed") return 0.0;
+  if (rule == "layer") return 2.0;
   if (rule.size() < 3 || rule.compare(0, 2, "h^") != 0) return std::nullopt;
   double p = 0;
   const auto [end, ec] = std::from_chars(rule.data() + 2, rule.data() + rule.size(), p);
@@ -192,6 +193,22 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   c.fluid = p;
 }
 
+// eps_rule = "layer": ε from the fluid's size at the structure; a stated ε must be
+// that one (a resolved case written back, or a study's level, states it).
+void apply_layer_rule(const Origin& origin, Case& c) {
+  const double eps = layer_eps(c.fluid->mu, c.fluid->size_near());
+  auto& k = c.coupling;
+  if (k.eps_given && std::abs(k.eps - eps) > 1e-9 * eps)
+    fail(origin, "coupling.eps", "= " + shortest(k.eps) + " contradicts coupling.eps_rule = \"layer\", which sets ε = " +
+         shortest(eps) + " from fluid.mu and the fluid's size at the structure",
+         "leave coupling.eps out, or coupling.eps_rule = \"fixed\"");
+  if (!(eps >= 1e-12 && eps <= kMaxMagnitude))
+    fail(origin, "coupling.eps_rule", "= \"layer\" gives ε = " + approx(eps, 3) + " for fluid.mu = " +
+         shortest(c.fluid->mu) + " and a size of " + shortest(c.fluid->size_near()) + " at the structure",
+         "ε in [1e-12, 1e30]: coupling.eps_rule = \"fixed\" with coupling.eps");
+  k.eps = eps;
+}
+
 void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::vector<std::string>* known) {
   Section s(section_table(root, "coupling", origin), "coupling", origin, known);
   auto& p = c.coupling;
@@ -199,6 +216,8 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   // (hF = 0.01, μ_F = 0.0035) and the fluid system loses its digits; ε = 1e-300
   // overflows outright.
   p.eps = s.number("eps", p.eps, {1e-12, kMaxMagnitude, true, true});
+  p.eps_given = s.has("eps");
+  p.eps_rule_given = s.has("eps_rule");
   p.omega = s.number("omega", p.omega, left_open(0, 1));
   p.tol = s.number("tol", p.tol, kSize);
   p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, case_limits().max_iterations);
@@ -206,7 +225,8 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   p.eps_rule = s.text("eps_rule", p.eps_rule);
   if (!eps_rule_power(p.eps_rule))
     fail(origin, "coupling.eps_rule", "= \"" + p.eps_rule + "\" is not a known rule",
-         "\"fixed\", or \"h^p\" with 0 < p <= 4 (for example \"h^2\")");
+         "\"fixed\", \"layer\", or \"h^p\" with 0 < p <= 4 (for example \"h^2\")");
+  if (p.eps_rule == "layer" && c.fluid) apply_layer_rule(origin, c);
   p.force = s.choice("force", p.force, {"small", "large"});
   s.reject_unknown();
 }
@@ -315,6 +335,11 @@ Case load_case_text(const std::string& text, const std::string& origin_name, con
     throw parse_error(origin_name, e);
   }
   return read_with_overrides(root, origin, "", /*has_fluid_default=*/false, overrides, out_dir);
+}
+
+double layer_eps(double mu, double h) {
+  const double layer = CouplingParams::kLayerFraction * h;
+  return layer * layer / mu;
 }
 
 double CouplingParams::eps_power() const { return eps_rule_power(eps_rule).value_or(0.0); }

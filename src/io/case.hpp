@@ -95,13 +95,17 @@ struct CouplingParams {
   double tol = 1.0e-4;
   int max_iterations = 100;
   std::string scheme = "constant";  // "constant" | "aitken" | "iqn-ils"
-  // How ε follows the mesh in a refinement study (fsicontact converge): "fixed" (the
-  // case's ε on every level) or "h^p" (ε · (h/h₀)^p, h the fluid size at the
-  // structure, h₀ the case's own). A single run uses ε as given either way.
+  // How ε follows the mesh: "fixed" (the case's ε on every level of a refinement
+  // study) or "h^p" (ε · (h/h₀)^p, h the fluid size at the structure, h₀ the case's
+  // own; a single run uses ε as given), or "layer": ε = (c h)²/μ_F with c =
+  // kLayerFraction, so that the Brinkman layer sqrt(μ_F ε) is c times the fluid size
+  // at the structure, in a single run too (docs/validation.md, "The penalty's error").
   std::string eps_rule = "fixed";
+  static constexpr double kLayerFraction = 0.5;
+  bool eps_given = false, eps_rule_given = false;  // stated in the file or by --set
   // SPEC §11: "small" (eq. 33) | "large" (the exact pull-back with J and F⁻ᵀ).
   std::string force = "small";
-  double eps_power() const;  // p of "h^p"; 0 for "fixed"
+  double eps_power() const;  // p of "h^p"; 2 for "layer"; 0 for "fixed"
 };
 
 struct ContactParams {
@@ -151,8 +155,11 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 Case load_case_text(const std::string& text, const std::string& origin,
                     const std::vector<std::string>& overrides = {}, const std::string& out_dir = "");
 
-// The p of coupling.eps_rule "h^p" (0 for "fixed"); none if the rule is not known.
+// The p of coupling.eps_rule "h^p" (0 for "fixed", 2 for "layer"); none if the rule is not known.
 std::optional<double> eps_rule_power(const std::string& rule);
+
+// ε of eps_rule = "layer" for a fluid of viscosity mu and size `h` at the structure.
+double layer_eps(double mu, double h);
 
 // The loads' strain scale against the small strains of linear elasticity, for a
 // structure of diameter `diam`: the problem in words ("structure.E = ... is too soft

@@ -65,6 +65,7 @@ int exit_status_of(const Study& study) {
   }
   for (const Restart& r : study.restarts)
     if (r.run.result.exit_status > 128) return interrupted_exit_status();
+  if (study.penalty_check.result.exit_status > 128) return interrupted_exit_status();
   return status;
 }
 
@@ -74,6 +75,20 @@ std::vector<std::string> level_dirs(const std::vector<LevelSpec>& specs) {
   return names;
 }
 
+// One run of a study: its case with the study's set-up cache, from `start` (null: at
+// rest), progress lines prefixed; its result, wall time and status in `run`.
+void run_one(LevelRun& run, SetupCache& cache, const ConvergeOptions& options, const std::string& prefix,
+             const Eigen::VectorXd* start = nullptr) {
+  RunOptions run_options;
+  run_options.cache = &cache;
+  run_options.initial_displacement = start;
+  if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
+  const Stopwatch clock;
+  run.result = run_case(run.spec.c, run_options);
+  run.wall_s = clock.elapsed();
+  run.status = status_of(run.result);
+}
+
 // Runs the levels coarsest first, each level's schemes together (they share its meshes
 // and set-ups); stops between runs on Ctrl-C or SIGTERM.
 void run_levels(Study& study, SetupCache& cache, const ConvergeOptions& options) {
@@ -81,13 +96,7 @@ void run_levels(Study& study, SetupCache& cache, const ConvergeOptions& options)
     if (interrupt_requested()) break;
     const std::string prefix = "[level " + std::to_string(run.spec.index) + "/" + std::to_string(study.levels) +
                                (study.schemes.size() > 1 ? ", " + run.spec.scheme : "") + "] ";
-    RunOptions run_options;
-    run_options.cache = &cache;
-    if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
-    const Stopwatch clock;
-    run.result = run_case(run.spec.c, run_options);
-    run.wall_s = clock.elapsed();
-    run.status = status_of(run.result);
+    run_one(run, cache, options, prefix);
     if (options.progress) options.progress(prefix + run.result.report + " (" + approx(run.wall_s, 3) + " s)");
   }
 }
@@ -113,20 +122,55 @@ void run_restarts(Study& study, SetupCache& cache, const ConvergeOptions& option
       r.start = start, r.own = own;
       const std::string prefix = "[level " + std::to_string(r.run.spec.index) + "/" + std::to_string(study.levels) +
                                  ", " + r.run.spec.scheme + " from " + r.from + "'s end state] ";
-      RunOptions run_options;
-      run_options.cache = &cache;
-      run_options.initial_displacement = &primary[i]->result.displacement;
-      if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
-      const Stopwatch clock;
-      r.run.result = run_case(r.run.spec.c, run_options);
-      r.run.wall_s = clock.elapsed();
-      r.run.status = status_of(r.run.result);
+      run_one(r.run, cache, options, prefix, &primary[i]->result.displacement);
       r.value = r.run.result.summary.is_null() ? NAN : q.quantity.read(r.run.result.summary);
       judge_restart(r, allowed);
       if (options.progress) options.progress(prefix + r.verdict);
       study.restarts.push_back(std::move(r));
     }
   }
+}
+
+// The finest level of the study's scheme once more, on its meshes, with ε·r²
+// (study/penalty_error.hpp): penalised fluid only, and not when only the structure
+// is refined (ε then does not move with the levels, and the fluid's error is not
+// the study's subject).
+void run_penalty_check(Study& study, SetupCache& cache, const ConvergeOptions& options) {
+  const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
+  const LevelRun& finest = *primary.back();
+  const Case& c = finest.spec.c;
+  if (!c.fluid || c.fluid->method != "penalised" || study.refine == "structure" || interrupt_requested()) return;
+  LevelRun& check = study.penalty_check;
+  check.spec = finest.spec;
+  check.spec.scheme = "eps-check";
+  check.spec.c.coupling.eps = c.coupling.eps * study.ratio * study.ratio;
+  check.spec.c.coupling.eps_rule = "fixed";  // ε as given, off the layer rule's
+  check.spec.c.output.dir += "-eps";
+  if (finest.status != "converged") {
+    check.status = "not run: the finest level did not converge";
+    return;
+  }
+  const std::string prefix = "[penalty check: level " + std::to_string(finest.spec.index) + ", ε = " +
+                             approx(check.spec.c.coupling.eps, 3) + "] ";
+  run_one(check, cache, options, prefix, &finest.result.displacement);  // warm: the same meshes, a nearby state
+  if (options.progress) options.progress(prefix + check.result.report + " (" + approx(check.wall_s, 3) + " s)");
+}
+
+// converge's default ε rule for a penalised case that states none: "layer" (the
+// Brinkman layer resolved at every level, io/case.hpp), as overrides of every level.
+std::vector<std::string> with_default_eps_rule(const Case& base, std::vector<std::string> overrides,
+                                               const ConvergeOptions& options) {
+  if (!base.fluid || base.fluid->method != "penalised" || base.coupling.eps_rule_given) return overrides;
+  const double eps = layer_eps(base.fluid->mu, base.fluid->size_near());
+  overrides.push_back("coupling.eps_rule=layer");
+  overrides.push_back("coupling.eps=" + shortest(eps));
+  if (options.progress)
+    options.progress("[eps] coupling.eps_rule = \"layer\" (converge's default for a penalised case stating no rule): "
+                     "ε = " + approx(eps, 4) + " on level 1, / r² per level" +
+                     (base.coupling.eps_given ? " (the case's ε = " + approx(base.coupling.eps, 4) +
+                                                    " is not used; --set coupling.eps_rule=fixed keeps it)"
+                                              : std::string()));
+  return overrides;
 }
 
 }  // namespace
@@ -142,7 +186,8 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   ConvergeResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-converge" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
-  std::vector<LevelSpec> specs = make_levels(case_path, options.overrides, options.levels, options.ratio,
+  const std::vector<std::string> overrides = with_default_eps_rule(base, options.overrides, options);
+  std::vector<LevelSpec> specs = make_levels(case_path, overrides, options.levels, options.ratio,
                                              options.schemes, result.out_dir, options.refine);
   std::stable_sort(specs.begin(), specs.end(), [](const LevelSpec& a, const LevelSpec& b) { return a.index < b.index; });
   SetupCache cache;
@@ -170,6 +215,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   out.begin(header);
   remove_stale_subdirs(result.out_dir, "level-", level_dirs(specs));
   run_levels(study, cache, options);
+  run_penalty_check(study, cache, options);
 
   evaluate(study, base.fluid.has_value());
   run_restarts(study, cache, options);

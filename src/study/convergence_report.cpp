@@ -48,6 +48,19 @@ static void choose_error_bar(QuantityStudy& q) {
   }
 }
 
+// The penalty's part (study/penalty_error.hpp) added to the levels' error bar.
+static void add_penalty_error(QuantityStudy& q, const Study& study) {
+  const LevelRun& check = study.penalty_check;
+  if (check.status != "converged" || q.values.empty()) return;
+  const Case& finest = runs_of(study, study.schemes.front()).back()->spec.c;
+  q.penalty = penalty_error(finest.coupling.eps, q.values.back(), q.quantity.read(check.result.summary), study.ratio);
+  q.error_bar_h = q.error_bar;
+  if (!std::isfinite(q.penalty.error_bar)) return;
+  q.penalty_dominates = !(q.penalty.error_bar <= q.error_bar_h);
+  if (q.penalty_dominates) q.estimate.asymptotic = false;
+  if (std::isfinite(q.error_bar)) q.error_bar += q.penalty.error_bar, q.error_bar_method += " + penalty";
+}
+
 double agreement_allowed(const QuantityStudy& q) {
   const double gci = q.estimate.gci_abs;
   const double base = std::isfinite(gci) && gci > 0 ? 0.1 * gci : 1e-6 * std::abs(q.values.empty() ? 0.0 : q.values.back());
@@ -92,6 +105,7 @@ void evaluate(Study& study, bool with_fluid) {
     for (const LevelRun* r : primary) h.push_back(size_of(study, r->spec.c));
     if (complete) qs.least_squares = least_squares_estimate(h, qs.values);
     choose_error_bar(qs);
+    add_penalty_error(qs, study);
     qs.scheme_difference.assign(qs.values.size(), NAN);
     for (std::size_t s = 1; s < study.schemes.size(); ++s) {
       const std::vector<const LevelRun*> other = runs_of(study, study.schemes[s]);
@@ -130,7 +144,11 @@ std::string convergence_csv(const Study& study) {
       << "iterations,wall_s,status";
   for (const auto& q : study.quantities) out << ',' << q.quantity.name;
   out << '\n';
-  for (const LevelRun& r : study.runs) {
+  std::vector<const LevelRun*> rows;
+  for (const LevelRun& r : study.runs) rows.push_back(&r);
+  if (study.penalty_check.status != "not run") rows.push_back(&study.penalty_check);
+  for (const LevelRun* row : rows) {
+    const LevelRun& r = *row;
     const Case& c = r.spec.c;
     const Json& s = r.result.summary;
     auto mesh = [&](const char* part) {
@@ -151,6 +169,25 @@ std::string tolerance_note(const Study& study) {
   return "coupling.tol = " + approx(study.tol_used, 3) + " is coarse against the discretisation error: the schemes' "
          "agreement and the values carry the coupling's own error; for it to be under a thousandth of max |u|'s GCI, "
          "rerun with --set coupling.tol=" + approx(study.tol_advised, 2);
+}
+
+// "φ ± U (method)", with a penalty check "φ ± U (GCI 0.1 + penalty 0.2)".
+static std::string error_bar_cell(const QuantityStudy& q) {
+  if (!std::isfinite(q.error_bar)) return "–";
+  std::string parts = q.error_bar_method;
+  if (std::isfinite(q.penalty.error_bar))
+    parts = q.error_bar_method.substr(0, q.error_bar_method.size() - 10) + " " + cell(q.error_bar_h, 2) + " + penalty " +
+            cell(q.penalty.error_bar, 2) + (q.penalty_dominates ? ", dominant" : "");
+  return cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + parts + ")";
+}
+
+static std::string penalty_note(const Study& study) {
+  const LevelRun& c = study.penalty_check;
+  if (c.status == "not run") return "";
+  return "\nPenalty check: the finest level again with ε = " + cell(c.spec.c.coupling.eps, 3) + " (ε·r²): " + c.status +
+         (c.status == "converged" ? "; its difference, times " + approx(kPenaltySafety / (study.ratio - 1), 3) +
+                                        ", is each quantity's penalty error bar (ε^(1/2) assumed)"
+                                  : "; the error bars are the levels' alone") + ".\n";
 }
 
 std::string convergence_markdown(const Study& study) {
@@ -174,7 +211,7 @@ std::string convergence_markdown(const Study& study) {
        << (std::isfinite(q.least_squares.limit)
                ? cell(q.least_squares.limit, 8) + " (" + approx(q.least_squares.order, 3) + ")"
                : std::string("–"))
-       << " | " << (std::isfinite(q.error_bar) ? cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + q.error_bar_method + ")" : "–") << " | "
+       << " | " << error_bar_cell(q) << " | "
        << (e.asymptotic ? (*e.asymptotic ? "yes" : "no") : "needs 4 levels") << " | "
        << (study.schemes.size() > 1 ? cell(q.max_scheme_difference, 3) + (q.schemes_agree ? "" : " (disagree)") : "–")
        << " |\n";
@@ -182,6 +219,7 @@ std::string convergence_markdown(const Study& study) {
   for (const Restart& r : study.restarts)
     md << "\nLevel " << r.run.spec.index << ": " << r.verdict << " (max |u| " << cell(r.start, 8) << " → "
        << cell(r.value, 8) << "; from rest " << r.run.spec.scheme << " ended at " << cell(r.own, 8) << ").\n";
+  md << penalty_note(study);
   const std::string note = tolerance_note(study);
   if (!note.empty()) md << "\nNote: " << note << ".\n";
   return md.str();
@@ -210,6 +248,42 @@ void write_convergence_png(const std::string& path, const Study& study) {
   write_chart(path, options, series);
 }
 
+// One quantity's entry of summary.json's "quantities".
+static Json quantity_json(const QuantityStudy& q) {
+  const ConvergenceEstimate& e = q.estimate;
+  Json values = Json::array(), orders = Json::array(), diffs = Json::array();
+  for (double v : q.values) values.push_back(number_or_null(v));
+  for (double p : e.orders) orders.push_back(number_or_null(p));
+  for (double d : q.scheme_difference) diffs.push_back(number_or_null(d));
+  return {{"unit", q.quantity.unit},
+          {"values", values},
+          {"observed_order", number_or_null(e.observed_order)},
+          {"orders", orders},
+          {"kind", kind_of(q)},
+          {"extrapolated", number_or_null(e.extrapolated)},
+          {"gci", number_or_null(e.gci)},
+          {"gci_abs", number_or_null(e.gci_abs)},
+          {"error_bar", number_or_null(q.error_bar)},
+          {"error_bar_method", q.error_bar_method},
+          {"least_squares",
+           {{"limit", number_or_null(q.least_squares.limit)},
+            {"order", number_or_null(q.least_squares.order)},
+            {"sigma", number_or_null(q.least_squares.sigma)},
+            {"safety", number_or_null(q.least_squares.safety)},
+            {"uncertainty", number_or_null(q.least_squares.uncertainty)},
+            {"order_at_bound", q.least_squares.order_at_bound}}},
+          {"asymptotic", e.asymptotic ? Json(*e.asymptotic) : Json(nullptr)},
+          {"error_bar_h", number_or_null(q.error_bar_h)},
+          {"penalty",
+           {{"eps", number_or_null(q.penalty.eps)},
+            {"eps_check", number_or_null(q.penalty.eps_check)},
+            {"value_check", number_or_null(q.penalty.value_check)},
+            {"error_bar", number_or_null(q.penalty.error_bar)},
+            {"dominates", q.penalty_dominates}}},
+          {"scheme_difference", diffs},
+          {"schemes_agree", q.schemes_agree}};
+}
+
 Json convergence_json(const Study& study) {
   Json levels = Json::array();
   for (const LevelRun& r : study.runs) {
@@ -224,40 +298,19 @@ Json convergence_json(const Study& study) {
     levels.push_back(l);
   }
   Json quantities = Json::object();
-  for (const auto& q : study.quantities) {
-    const ConvergenceEstimate& e = q.estimate;
-    Json values = Json::array(), orders = Json::array(), diffs = Json::array();
-    for (double v : q.values) values.push_back(number_or_null(v));
-    for (double p : e.orders) orders.push_back(number_or_null(p));
-    for (double d : q.scheme_difference) diffs.push_back(number_or_null(d));
-    quantities[q.quantity.name] = {{"unit", q.quantity.unit},
-                                   {"values", values},
-                                   {"observed_order", number_or_null(e.observed_order)},
-                                   {"orders", orders},
-                                   {"kind", kind_of(q)},
-                                   {"extrapolated", number_or_null(e.extrapolated)},
-                                   {"gci", number_or_null(e.gci)},
-                                   {"gci_abs", number_or_null(e.gci_abs)},
-                                   {"error_bar", number_or_null(q.error_bar)},
-                                   {"error_bar_method", q.error_bar_method},
-                                   {"least_squares",
-                                    {{"limit", number_or_null(q.least_squares.limit)},
-                                     {"order", number_or_null(q.least_squares.order)},
-                                     {"sigma", number_or_null(q.least_squares.sigma)},
-                                     {"safety", number_or_null(q.least_squares.safety)},
-                                     {"uncertainty", number_or_null(q.least_squares.uncertainty)},
-                                     {"order_at_bound", q.least_squares.order_at_bound}}},
-                                   {"asymptotic", e.asymptotic ? Json(*e.asymptotic) : Json(nullptr)},
-                                   {"scheme_difference", diffs},
-                                   {"schemes_agree", q.schemes_agree}};
-  }
+  for (const auto& q : study.quantities) quantities[q.quantity.name] = quantity_json(q);
   Json restarts = Json::array();
   for (const Restart& r : study.restarts)
     restarts.push_back({{"level", r.run.spec.index}, {"scheme", r.run.spec.scheme}, {"from", r.from},
                         {"start", number_or_null(r.start)}, {"own", number_or_null(r.own)},
                         {"value", number_or_null(r.value)}, {"status", r.run.status}, {"verdict", r.verdict},
                         {"dir", r.run.spec.c.output.dir}});
+  const LevelRun& pc = study.penalty_check;
+  const Json penalty_check = pc.status == "not run" ? Json(nullptr)
+                             : Json{{"status", pc.status}, {"eps", pc.spec.c.coupling.eps}, {"dir", pc.spec.c.output.dir},
+                                    {"wall_s", number_or_null(pc.wall_s)}, {"safety", kPenaltySafety}};
   return {{"ratio", study.ratio},
+          {"penalty_check", penalty_check},
           {"refine", study.refine},
           {"restarts", restarts},
           {"schemes", study.schemes},

@@ -10,6 +10,7 @@
 #include "study/levels.hpp"
 #include "study/quantities.hpp"
 #include "study/least_squares.hpp"
+#include "study/penalty_error.hpp"
 #include "study/richardson.hpp"
 
 namespace fsi {
@@ -30,8 +31,15 @@ struct QuantityStudy {
   // the asymptotic range (or three levels converge monotonically); with four levels or
   // more otherwise, the least-squares uncertainty; for three oscillating levels the
   // range bound of richardson.hpp. NaN: none can be given (diverging).
+  // With a penalty check (penalised fluid), error_bar = error_bar_h + penalty.error_bar
+  // (study/penalty_error.hpp) and error_bar_method ends in " + penalty".
   double error_bar = NAN;
-  std::string error_bar_method;  // "GCI" | "least squares" | "oscillation range" | 
+  std::string error_bar_method;  // "GCI" | "least squares" | "oscillation range" (+ " + penalty")
+  double error_bar_h = NAN;      // the levels' part alone
+  PenaltyError penalty;          // the penalty's part (NaN without a check)
+  // U_ε > U_h: the finest level is not in the asymptotic range of both parameters,
+  // whatever the levels' orders say (estimate.asymptotic is then false).
+  bool penalty_dominates = false;
   // Other schemes: per level the largest |φ_scheme − φ| between converged runs (NaN:
   // none converged beside the study's own, or the quantity is missing).
   std::vector<double> scheme_difference;
@@ -62,6 +70,9 @@ struct Study {
   std::vector<LevelRun> runs;        // level-major: level 1's schemes, then level 2's, ...
   std::vector<QuantityStudy> quantities;
   std::vector<Restart> restarts;
+  // The finest level of the study's scheme again with ε·ratio² (penalised fluid only;
+  // status "not run" otherwise).
+  LevelRun penalty_check;
   double tol_used = NAN, tol_advised = NAN;  // coupling.tol against 1e-3 of max |u|'s GCI (m²)
 };
 

@@ -65,6 +65,33 @@ TEST(Case, OverridesTakeTomlValuesOrBareWords) {
   EXPECT_FALSE(c.output.png);
 }
 
+// eps_rule = "layer" (issue 27): ε = (h/2)²/μ_F from the fluid's size at the
+// structure (h_near where there is a band), in a single run too; a stated ε must be
+// that one, so a resolved case written back loads again, and any other is refused.
+TEST(Case, TheLayerRuleSetsEpsFromTheSizeAtTheStructure) {
+  const Case plain = load_case("", {"fluid.h=0.004", "coupling.eps_rule=layer"});
+  EXPECT_NEAR(plain.coupling.eps, 0.002 * 0.002 / 0.0035, 1e-18);
+  EXPECT_EQ(plain.coupling.eps_power(), 2.0);
+  const Case band = load_case("", {"fluid.h_near=0.001", "coupling.eps_rule=layer", "fluid.mu=0.01"});
+  EXPECT_NEAR(band.coupling.eps, 0.0005 * 0.0005 / 0.01, 1e-18);
+  EXPECT_EQ(to_toml(load_case_text(to_toml(band), "again.toml")), to_toml(band));
+  try {
+    load_case("", {"coupling.eps_rule=layer", "coupling.eps=1e-5"});
+    FAIL() << "a contradicting ε was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("coupling.eps = 1e-05 contradicts coupling.eps_rule = \"layer\""),
+              std::string::npos) << e.what();
+  }
+  try {  // ε below the key's own range
+    load_case("", {"coupling.eps_rule=layer", "fluid.mu=1e20"});
+    FAIL() << "ε = 2.5e-25 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("coupling.eps_rule = \"layer\" gives ε = 2.5e-25"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(load_case("").coupling.eps_rule_given);
+  EXPECT_TRUE(plain.coupling.eps_rule_given);
+}
+
 TEST(Case, TheBandIsAWidthOrABoxAndEpsRulesHaveAPower) {
   const Case width = load_case("", {"fluid.h_near=0.002", "fluid.band=0.03", "coupling.eps_rule=h^1.5"});
   EXPECT_EQ(width.fluid->h_near, 0.002);
