@@ -53,15 +53,17 @@ SampledFluid sample_at(const FluidField& field, const std::vector<Location>& whe
   return s;
 }
 
-FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F, ForceModel model)
-    : mesh_(reference),
+FluidForce::FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F, ForceModel model,
+                       int sampling)
+    : refinement_(sampling > 1 ? std::make_shared<const UniformRefinement>(refine_uniformly(reference, sampling)) : nullptr),
+      mesh_(refinement_ ? refinement_->fine : reference),
       mu_F_(mu_F),
       eps_(eps),
       model_(model),
       f_F_(f_F),
-      K_mu_(assemble_elasticity(reference, Lame{0.0, mu_F})),  // λ = 0, μ = μ_F: 2μ_F ε:ε
-      B_(assemble_divergence(reference)),
-      M_(assemble_vector_mass(reference)) {}
+      K_mu_(assemble_elasticity(mesh_, Lame{0.0, mu_F})),  // λ = 0, μ = μ_F: 2μ_F ε:ε
+      B_(assemble_divergence(mesh_)),
+      M_(assemble_vector_mass(mesh_)) {}
 
 Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) const {
   const int nv = mesh_.num_vertices();
@@ -77,11 +79,29 @@ Eigen::VectorXd FluidForce::body_force(const Eigen::VectorXd& u, bool jacobian) 
   return body;
 }
 
-// Viscous, pressure, penalty and body-force terms of eq. (33).
+Eigen::VectorXd FluidForce::to_samples(const Eigen::VectorXd& u) const {
+  if (!refinement_) return u;
+  const Eigen::Index n = refinement_->P.cols();
+  if (u.size() != 2 * n) throw std::invalid_argument("FluidForce::to_samples: u has " + std::to_string(u.size()) +
+                                                     " entries; the structure has " + std::to_string(n) + " vertices");
+  Eigen::VectorXd fine(2 * refinement_->P.rows());
+  fine << refinement_->P * u.head(n), refinement_->P * u.tail(n);
+  return fine;
+}
+
+// Viscous, pressure, penalty and body-force terms of eq. (33), on the integrals' mesh,
+// then (sampling > 1) restricted to the structure's vertices: w = Σ P_ij φ_i^fine.
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
-  check_sizes(s, u, space_ ? space_->num_nodes() : mesh_.num_vertices());
-  if (model_ == ForceModel::large) return space_ ? p2_large(s, u) : large(s, u);  // P2: p2_force.cpp
-  return K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + (space_ ? p2_body_force(u) : body_force(u));
+  const Eigen::VectorXd uf = to_samples(u);
+  check_sizes(s, uf, space_ ? space_->num_nodes() : mesh_.num_vertices());
+  Eigen::VectorXd load;
+  if (model_ == ForceModel::large) load = space_ ? p2_large(s, uf) : large(s, uf);  // P2: p2_force.cpp
+  else load = K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + (space_ ? p2_body_force(uf) : body_force(uf));
+  if (!refinement_) return load;
+  const Eigen::Index nf = refinement_->P.rows();
+  Eigen::VectorXd coarse(2 * refinement_->P.cols());
+  coarse << refinement_->P.transpose() * load.head(nf), refinement_->P.transpose() * load.tail(nf);
+  return coarse;
 }
 
 }  // namespace fsi

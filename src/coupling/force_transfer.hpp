@@ -7,9 +7,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 #include "fem/p2.hpp"
+#include "fem/uniform_refinement.hpp"
 #include "fluid/fluid_field.hpp"
 #include "mesh/mesh.hpp"
 #include "solid/elasticity.hpp"
@@ -40,8 +42,12 @@ enum class ForceModel { small, large };
 
 class FluidForce {
  public:
+  // `sampling` = m > 1 (coupling.force_sampling, P1 only): the integrals run on the
+  // reference mesh cut into m² triangles each (fem/uniform_refinement.hpp), the fluid
+  // sampled at its vertices (sample_mesh(), at to_samples(u)), the load restricted to
+  // the structure's vertices with the transpose of the interpolation.
   FluidForce(const Mesh& reference, double mu_F, double eps, const VectorField& f_F,
-             ForceModel model = ForceModel::small);
+             ForceModel model = ForceModel::small, int sampling = 1);
   // The same on the P2 space (issue 14, p2_force.cpp): ṽ, p̃ and u P2 fields on the
   // space's nodes, dof(node, c) = c·n + node, w over the P2 basis. `space` must
   // outlive the object.
@@ -55,6 +61,11 @@ class FluidForce {
   // the space (2n, n, 2n; n the vertices for P1, the nodes for P2).
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
+  // Where the fluid is sampled: the vertices of this mesh displaced by to_samples(u)
+  // (the reference mesh and u itself unless sampling > 1). P1 structures only.
+  const Mesh& sample_mesh() const { return mesh_; }
+  Eigen::VectorXd to_samples(const Eigen::VectorXd& u) const;
+
  private:
   // −∫ (f_F∘φ)·w (times J if `jacobian`), φ(X) = X + u(X) at the quadrature points.
   Eigen::VectorXd body_force(const Eigen::VectorXd& u, bool jacobian = false) const;
@@ -63,7 +74,8 @@ class FluidForce {
   Eigen::VectorXd p2_body_force(const Eigen::VectorXd& u) const;
   Eigen::VectorXd p2_large(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
-  const Mesh& mesh_;
+  std::shared_ptr<const UniformRefinement> refinement_;  // sampling > 1 only
+  const Mesh& mesh_;  // the integrals' mesh: the reference, or its refinement
   const P2Space* space_ = nullptr;  // set for the P2 structure
   double mu_F_;
   double eps_;

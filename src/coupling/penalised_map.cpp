@@ -28,7 +28,8 @@ MapValue PenalisedMap::operator()(const Eigen::VectorXd& u, int k, const Contact
   // Steps 2–3: the fluid solve, exact (at least) where the deformed vertices sample
   // it, then b_S from v∘φ^k, p∘φ^k (eq. 33).
   const Stopwatch located;
-  const std::vector<Location> where = locate_deformed_vertices(p_.fluid_locator, reference, u);
+  const std::vector<Location> where =
+      locate_deformed_vertices(p_.fluid_locator, p_.force.sample_mesh(), p_.force.to_samples(u));
   const double t_locate = located.elapsed();
   const FluidSolution* fluid = nullptr;
   {

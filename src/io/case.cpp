@@ -228,6 +228,7 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
          "\"fixed\", \"layer\", or \"h^p\" with 0 < p <= 4 (for example \"h^2\")");
   if (p.eps_rule == "layer" && c.fluid) apply_layer_rule(origin, c);
   p.force = s.choice("force", p.force, {"small", "large"});
+  p.force_sampling = s.integer("force_sampling", p.force_sampling, 1, 8);
   s.reject_unknown();
 }
 
@@ -401,6 +402,7 @@ std::string to_toml(const Case& c) {
   toml::table coupling{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
                       {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};
   if (k.force != "small") coupling.insert("force", k.force);  // the default stays unwritten
+  if (k.force_sampling != 1) coupling.insert("force_sampling", k.force_sampling);
   t.insert("coupling", coupling);
   t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
   toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};

@@ -105,6 +105,9 @@ struct CouplingParams {
   bool eps_given = false, eps_rule_given = false;  // stated in the file or by --set
   // SPEC §11: "small" (eq. 33) | "large" (the exact pull-back with J and F⁻ᵀ).
   std::string force = "small";
+  // The fluid sampled on the structure's triangles cut into m² each (1: at its
+  // vertices, the paper's eq. 33); P1 structures, penalised fluid (issue 27).
+  int force_sampling = 1;
   double eps_power() const;  // p of "h^p"; 2 for "layer"; 0 for "fixed"
 };
 

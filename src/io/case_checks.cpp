@@ -223,6 +223,10 @@ void check_structure_in_box(const Case& c, const Origin& o) {
 // hF everywhere: a fixed mesh file or a band of the fixed mesh cannot be honoured.
 void check_fluid_method(const Case& c, const Origin& o) {
   const auto& f = *c.fluid;
+  if (c.coupling.force_sampling > 1 && (f.method != "penalised" || c.structure.element != "P1"))
+    fail(o, "coupling.force_sampling", "= " + std::to_string(c.coupling.force_sampling) +
+                                       " refines how eq. (33) samples the penalised fluid on a P1 structure",
+         "1 with fluid.method = \"body-fitted\" or structure.element = \"P2\"");
   if (f.method != "body-fitted") return;
   if (!f.mesh.empty())
     fail(o, "fluid.method", "= \"body-fitted\" remeshes the fluid around the deformed structure on every pass, "

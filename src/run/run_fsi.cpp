@@ -54,7 +54,7 @@ FluidForce fluid_force_of(const Case& c, const StructureSetup& s) {
   const auto f = [f_F](const Point&) { return f_F; };
   const ForceModel model = c.coupling.force == "large" ? ForceModel::large : ForceModel::small;
   if (s.p2()) return FluidForce(*s.p2(), c.fluid->mu, c.coupling.eps, f, model);
-  return FluidForce(s.mesh(), c.fluid->mu, c.coupling.eps, f, model);
+  return FluidForce(s.mesh(), c.fluid->mu, c.coupling.eps, f, model, c.coupling.force_sampling);
 }
 
 // The fluid alone around the structure at rest: one solve, and its force on the
@@ -67,7 +67,9 @@ CouplingResult solve_fluid_alone(const Case& c, StructureSetup& s, FluidSetup& f
   result.structure = s.solver->at_rest();
   result.converged = true;
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(2 * s.mesh().num_vertices());
-  result.fluid_load = fluid_force_of(c, s)(sample_at_deformed_vertices(FluidField(*f.locator, v), s.mesh(), rest), rest);
+  const FluidForce force = fluid_force_of(c, s);
+  result.fluid_load =
+      force(sample_at_deformed_vertices(FluidField(*f.locator, v), force.sample_mesh(), force.to_samples(rest)), rest);
   return result;
 }
 

@@ -92,6 +92,23 @@ TEST(Case, TheLayerRuleSetsEpsFromTheSizeAtTheStructure) {
   EXPECT_TRUE(plain.coupling.eps_rule_given);
 }
 
+// coupling.force_sampling (issue 27): 1 to 8, for the penalised fluid on a P1 structure.
+TEST(Case, ForceSamplingIsForThePenalisedFluidOnAP1Structure) {
+  const Case c = load_case("", {"coupling.force_sampling=3"});
+  EXPECT_EQ(c.coupling.force_sampling, 3);
+  EXPECT_EQ(to_toml(load_case_text(to_toml(c), "again.toml")), to_toml(c));
+  EXPECT_EQ(load_case("").coupling.force_sampling, 1);
+  for (const std::vector<std::string>& sets :
+       {std::vector<std::string>{"coupling.force_sampling=9"}, {"coupling.force_sampling=0"},
+        {"coupling.force_sampling=2", "fluid.method=body-fitted"}, {"coupling.force_sampling=2", "structure.element=P2"}})
+    try {
+      load_case("", sets);
+      FAIL() << sets.front() << " accepted with " << sets.back();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("coupling.force_sampling"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Case, TheBandIsAWidthOrABoxAndEpsRulesHaveAPower) {
   const Case width = load_case("", {"fluid.h_near=0.002", "fluid.band=0.03", "coupling.eps_rule=h^1.5"});
   EXPECT_EQ(width.fluid->h_near, 0.002);

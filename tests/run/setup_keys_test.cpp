@@ -43,6 +43,7 @@ std::string other_value(const std::string& key) {
                                                              {"output.probes", "[[0.1, 0.01]]"},
                                                              {"structure.model", "neo-hookean"},
                                                              {"coupling.force", "large"},
+                                                             {"coupling.force_sampling", "2"},
                                                              {"structure.element", "P2"},
                                                              {"structure.mesher", "gmsh"},
                                                              {"fluid.mesher", "gmsh"},
