@@ -18,6 +18,16 @@ void check_sizes(const SampledFluid& s, const Eigen::VectorXd& u, int n) {
                               std::to_string(n) + " nodes (2n, n, 2n expected)");
 }
 
+// A per-component operator (the P1 interpolation, or its transpose) applied to both
+// components of a vector field in paper ordering (x values, then y values).
+template <typename Operator>
+Eigen::VectorXd per_component(const Operator& A, const Eigen::VectorXd& field) {
+  const Eigen::Index n = A.cols();
+  Eigen::VectorXd out(2 * A.rows());
+  out << A * field.head(n), A * field.tail(n);
+  return out;
+}
+
 }  // namespace
 
 SampledFluid sample_at_deformed_vertices(const FluidField& field, const Mesh& reference,
@@ -84,9 +94,7 @@ Eigen::VectorXd FluidForce::to_samples(const Eigen::VectorXd& u) const {
   const Eigen::Index n = refinement_->P.cols();
   if (u.size() != 2 * n) throw std::invalid_argument("FluidForce::to_samples: u has " + std::to_string(u.size()) +
                                                      " entries; the structure has " + std::to_string(n) + " vertices");
-  Eigen::VectorXd fine(2 * refinement_->P.rows());
-  fine << refinement_->P * u.head(n), refinement_->P * u.tail(n);
-  return fine;
+  return per_component(refinement_->P, u);
 }
 
 // Viscous, pressure, penalty and body-force terms of eq. (33), on the integrals' mesh,
@@ -97,11 +105,7 @@ Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::Vecto
   Eigen::VectorXd load;
   if (model_ == ForceModel::large) load = space_ ? p2_large(s, uf) : large(s, uf);  // P2: p2_force.cpp
   else load = K_mu_ * s.v - B_ * s.p + (M_ * s.v) / eps_ + (space_ ? p2_body_force(uf) : body_force(uf));
-  if (!refinement_) return load;
-  const Eigen::Index nf = refinement_->P.rows();
-  Eigen::VectorXd coarse(2 * refinement_->P.cols());
-  coarse << refinement_->P.transpose() * load.head(nf), refinement_->P.transpose() * load.tail(nf);
-  return coarse;
+  return refinement_ ? per_component(refinement_->P.transpose(), load) : load;
 }
 
 }  // namespace fsi

@@ -48,6 +48,9 @@ static void choose_error_bar(QuantityStudy& q) {
   }
 }
 
+// What add_penalty_error appends to error_bar_method (summary.json's contract).
+static const std::string kPenaltySuffix = " + penalty";
+
 // The penalty's part (study/penalty_error.hpp) added to the levels' error bar.
 static void add_penalty_error(QuantityStudy& q, const Study& study) {
   const LevelRun& check = study.penalty_check;
@@ -58,7 +61,7 @@ static void add_penalty_error(QuantityStudy& q, const Study& study) {
   if (!std::isfinite(q.penalty.error_bar)) return;
   q.penalty_dominates = !(q.penalty.error_bar <= q.error_bar_h);
   if (q.penalty_dominates) q.estimate.asymptotic = false;
-  if (std::isfinite(q.error_bar)) q.error_bar += q.penalty.error_bar, q.error_bar_method += " + penalty";
+  if (std::isfinite(q.error_bar)) q.error_bar += q.penalty.error_bar, q.error_bar_method += kPenaltySuffix;
 }
 
 double agreement_allowed(const QuantityStudy& q) {
@@ -175,9 +178,10 @@ std::string tolerance_note(const Study& study) {
 static std::string error_bar_cell(const QuantityStudy& q) {
   if (!std::isfinite(q.error_bar)) return "–";
   std::string parts = q.error_bar_method;
-  if (std::isfinite(q.penalty.error_bar))
-    parts = q.error_bar_method.substr(0, q.error_bar_method.size() - 10) + " " + cell(q.error_bar_h, 2) + " + penalty " +
-            cell(q.penalty.error_bar, 2) + (q.penalty_dominates ? ", dominant" : "");
+  const std::size_t suffix = parts.rfind(kPenaltySuffix);
+  if (suffix != std::string::npos && suffix + kPenaltySuffix.size() == parts.size())
+    parts = parts.substr(0, suffix) + " " + cell(q.error_bar_h, 2) + kPenaltySuffix + " " + cell(q.penalty.error_bar, 2) +
+            (q.penalty_dominates ? ", dominant" : "");
   return cell(q.values.back(), 8) + " ± " + cell(q.error_bar, 2) + " (" + parts + ")";
 }
 
