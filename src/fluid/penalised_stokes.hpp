@@ -61,6 +61,10 @@ class PenalisedStokes {
   // A new run: forget the last solution (the next solve() refactorises). What the
   // strategy keeps for the next run: see SubstructuredSolve::new_run.
   void reset();
+  // After reset(), for a run that starts from the last run's state (a study's warm
+  // start, at another ε): the substructured solve keeps the last near region and its
+  // far-field factorisation (χ = 0 there: they hold for any ε) if it covers the first χ.
+  void continue_last_run() { strategy_->continue_last_run(); }
 
   // Solves for the current χ; if χ did not change since the last solve, returns the
   // previous solution without refactorising. The fields are exact at least on the

@@ -50,6 +50,9 @@ class StokesSolveStrategy {
   virtual void expect(Eigen::VectorXd /*chi_hint*/) {}
   // A new run (what it keeps for the next one: see the strategy).
   virtual void new_run() {}
+  // The new run starts from the last run's state (a warm start): what the last run
+  // ended with may serve its first solve (see the strategy).
+  virtual void continue_last_run() {}
   virtual std::string name() const = 0;
   virtual const RegionSchurSolver* region() const { return nullptr; }
 };
@@ -84,6 +87,9 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   // The near region and its far-field factorisation are kept (χ = 0 there, so they
   // hold for any ε): a sweep's next row reuses them if its first region is the same.
   void new_run() override;
+  // The run's first region is the last run's if it covers the first χ (however it
+  // rounds: a warm start is not a run of its own), its far field not refactorised.
+  void continue_last_run() override { continue_region_ = true; }
   std::string name() const override { return whole_.name() + "+schur"; }
   const RegionSchurSolver* region() const override { return region_.get(); }
 
@@ -111,6 +117,7 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   std::vector<char> interior_vertex_;         // vertices whose triangles are all near
   bool too_large_ = false;                    // the near region would be most of D: solve whole
   bool first_of_run_ = true;                  // the next solve is a run's first
+  bool continue_region_ = false;              // see continue_last_run()
   // The last solution is exact on the near region only; its χ and ε, for the
   // expansion (and the bubbles it recovers).
   bool pending_expansion_ = false;

@@ -50,6 +50,7 @@ void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTr
 // is that region, triangle for triangle: the row's numbers are then those of a
 // separate run, bit for bit (another region rounds differently).
 void SubstructuredSolve::start_region(const Eigen::VectorXd& chi, double eps) {
+  if (continue_region_ && region_ && near_region_covers(chi)) return;
   margin_ = 0;
   too_large_ = false;
   std::vector<char> mask = region_mask(chi);
@@ -133,6 +134,7 @@ void SubstructuredSolve::new_run() {
   pending_expansion_ = false;
   hint_.resize(0);  // the last run's
   first_of_run_ = true;
+  continue_region_ = false;
   too_large_ = false;  // decided again by the run's first region
 }
 

@@ -106,8 +106,10 @@ struct CouplingParams {
   // SPEC §11: "small" (eq. 33) | "large" (the exact pull-back with J and F⁻ᵀ).
   std::string force = "small";
   // The fluid sampled on the structure's triangles cut into m² each (1: at its
-  // vertices, the paper's eq. 33); P1 structures, penalised fluid (issue 27).
+  // vertices, the paper's eq. 33); P1 structures, penalised fluid (issue 27). With
+  // eps_rule = "layer" and no stated value: layer_sampling (the layer resolved).
   int force_sampling = 1;
+  bool force_sampling_given = false;
   double eps_power() const;  // p of "h^p"; 2 for "layer"; 0 for "fixed"
 };
 
@@ -163,6 +165,9 @@ std::optional<double> eps_rule_power(const std::string& rule);
 
 // ε of eps_rule = "layer" for a fluid of viscosity mu and size `h` at the structure.
 double layer_eps(double mu, double h);
+// eps_rule = "layer"'s default coupling.force_sampling: the structure's triangles
+// (size h_S) cut into sub-triangles no wider than the layer, m = ⌈h_S / layer⌉ in [1, 8].
+int layer_sampling(double h_S, double layer);
 
 // The loads' strain scale against the small strains of linear elasticity, for a
 // structure of diameter `diam`: the problem in words ("structure.E = ... is too soft

@@ -235,10 +235,6 @@ void check_fluid_method(const Case& c, const Origin& o) {
   if (f.h_near > 0)
     fail(o, "fluid.method", "= \"body-fitted\" does not refine a band (fluid.h_near = " + shortest(f.h_near) + ")",
          "\"body-fitted\" with fluid.h_near = 0, or \"penalised\"");
-  if (c.coupling.force != "small")
-    fail(o, "coupling.force", "= \"" + c.coupling.force + "\" is the penalised method's pull-back of eq. (33); "
-                              "fluid.method = \"body-fitted\" has its own force on the fitted interface",
-         "\"small\" with fluid.method = \"body-fitted\", or \"large\" with \"penalised\"");
   // Its traction on the fitted interface is tested against P1 traces only (body_fitted_force.hpp).
   if (c.structure.element != "P1")
     fail(o, "structure.element", "= \"" + c.structure.element + "\": fluid.method = \"body-fitted\" transfers its "

@@ -35,6 +35,11 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
   BodyFittedFluidParams p;
   p.box = {f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
   p.box.holes = case_holes(c);  // [[obstacles]]: each a hole Sigma_5_i (SPEC §9)
+  // coupling.force = "large" is the exact traction on the deformed interface, as the
+  // penalised method's exact pull-back; "small" the pressure with the reference normal,
+  // as eq. (33) leaves it (body_fitted_force.hpp; the two differ by a model term,
+  // docs/validation.md "The x load").
+  p.normal = c.coupling.force == "large" ? PressureNormal::deformed : PressureNormal::reference;
   p.mu = f.mu;
   const Point f_F = f.f;
   p.f = [f_F](const Point&) { return f_F; };

@@ -83,7 +83,10 @@ CouplingResult couple(const Case& c, StructureSetup& s, FluidSetup& f, PhaseTime
   loop.progress = progress;
   const ProbeSet probes(ref, c.output.probes, s.p2());
   loop.observe = probes.observer();  // history.csv's u_x_i, u_y_i
-  if (initial) loop.initial = *initial;
+  if (initial) {
+    loop.initial = *initial;
+    f.stokes->continue_last_run();  // the kept near region may serve the start's χ
+  }
   const ContactGap& gap = *s.gap;
   if (gap.normal()) {
     // From the linearisation at rest, whatever a cached setup's last run left (a sweep's

@@ -148,7 +148,6 @@ std::vector<BadInput> bad_keys() {
       {"scheme_unknown", fsi, "--set coupling.scheme=newton", {"coupling.scheme", "constant", "aitken", "iqn-ils"}},
       {"model_unknown", fsi, "--set structure.model=rubber", {"structure.model", "linear", "saint-venant-kirchhoff", "neo-hookean"}},
       {"force_unknown", fsi, "--set coupling.force=huge", {"coupling.force", "small", "large"}},
-      {"large_force_body_fitted", fsi, "--set coupling.force=large --set fluid.method=body-fitted", {"coupling.force", "penalised"}},
       {"element_unknown", fsi, "--set structure.element=P3", {"structure.element", "P1", "P2"}},
       {"p2_body_fitted", fsi, "--set structure.element=P2 --set fluid.method=body-fitted", {"structure.element", "P1", "penalised"}},
       {"max_iterations_negative", fsi, "--set coupling.max_iterations=-1", {"coupling.max_iterations", "integer"}},

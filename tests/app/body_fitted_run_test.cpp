@@ -53,6 +53,33 @@ TEST(BodyFittedRun, FixedPointConvergesWithoutContact) {
     EXPECT_TRUE(fs::exists(dir / "res" / f)) << f;
 }
 
+// coupling.force chooses the model (issue 27, tests/coupling/force_models_test.cpp):
+// "large" applies the traction on the deformed interface, "small" the pressure with
+// the reference normal. On a Saint-Venant–Kirchhoff beam the pressure level (about
+// −500 Pa) pulls the free end by 15 N/m: held dead ("small") that tension stiffens the
+// beam, which then bends about half as far (measured 7.52 mm); as a follower load
+// ("large", the physical one) it does not, and the beam bends as the linear one does
+// (13.10 against 13.31 mm). Were "large" not wired to the deformed normal, both would
+// give 7.52 mm.
+TEST(BodyFittedRun, TheForceModelChoosesTheNormalOfThePressure) {
+  const fs::path dir = testing::scratch_dir("body-fitted-large");
+  const std::string svk = " --set structure.model=saint-venant-kirchhoff --set output.vtu=false";
+  double deflection[2] = {0, 0};
+  const char* models[2] = {"small", "large"};
+  for (int m = 0; m < 2; ++m) {
+    const std::string out = std::string("res-") + models[m];
+    const testing::CliRun r =
+        testing::run_cli("run " + kCase + kCoarse + svk + " --set coupling.force=" + models[m] + " --out " + out, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(testing::slurp(dir / out / "summary.json"));
+    EXPECT_EQ(j["parameters"]["coupling"]["force"], models[m]);
+    deflection[m] = j["max_displacement"];
+  }
+  EXPECT_NEAR(deflection[0], 0.00752, 0.05 * 0.00752);
+  EXPECT_NEAR(deflection[1], 0.01310, 0.05 * 0.01310);
+  fs::remove_all(dir);
+}
+
 TEST(BodyFittedRun, FluidAloneAroundTheStructureAtRest) {
   const fs::path dir = testing::scratch_dir("body-fitted-fluid");
   const testing::CliRun r =

@@ -90,6 +90,17 @@ TEST(Case, TheLayerRuleSetsEpsFromTheSizeAtTheStructure) {
   }
   EXPECT_FALSE(load_case("").coupling.eps_rule_given);
   EXPECT_TRUE(plain.coupling.eps_rule_given);
+  // Eq. (33) sampled on sub-triangles no wider than the layer: ⌈hS / layer⌉, at most 8.
+  EXPECT_EQ(load_case("", {"coupling.eps_rule=layer"}).coupling.force_sampling, 3);  // 0.015 / 0.005
+  EXPECT_EQ(plain.coupling.force_sampling, 8);                                         // ⌈0.015 / 0.002⌉
+  EXPECT_EQ(band.coupling.force_sampling, 8);                                          // 30, at most 8
+  EXPECT_EQ(load_case("", {"coupling.eps_rule=layer", "structure.h=0.01"}).coupling.force_sampling, 2);
+  for (const std::vector<std::string>& kept : std::vector<std::vector<std::string>>{
+           {"coupling.force_sampling=1"}, {"structure.element=P2"}, {"fluid.method=body-fitted"}}) {
+    std::vector<std::string> sets = kept;
+    sets.push_back("coupling.eps_rule=layer");
+    EXPECT_EQ(load_case("", sets).coupling.force_sampling, 1) << kept[0];
+  }
 }
 
 // coupling.force_sampling (issue 27): 1 to 8, for the penalised fluid on a P1 structure.
