@@ -9,7 +9,7 @@
 #include "fluid/stokes_residual.hpp"
 #include "mesh/polygon.hpp"
 #include "mesh/structure_outline.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 namespace {

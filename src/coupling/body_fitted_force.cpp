@@ -1,6 +1,6 @@
 #include "coupling/body_fitted_force.hpp"
 
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

@@ -11,7 +11,7 @@
 #include "coupling/coupled_map.hpp"
 #include "coupling/coupling_result.hpp"
 #include "coupling/relaxation.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

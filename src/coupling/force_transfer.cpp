@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fem/integration.hpp"
+#include "solid/elasticity.hpp"  // A_S with Lamé (0, μ_F), B
 
 namespace fsi {
 namespace {

@@ -14,7 +14,7 @@
 #include "fem/uniform_refinement.hpp"
 #include "fluid/fluid_field.hpp"
 #include "mesh/mesh.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

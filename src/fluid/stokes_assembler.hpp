@@ -12,13 +12,12 @@
 #include <future>
 #include <vector>
 
+#include "fem/vector_p1.hpp"  // VectorField
 #include "fluid/mini_element.hpp"
 #include "fluid/region_schur.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fsi {
-
-using VectorField = std::function<Point(const Point&)>;
 
 struct FluidBoundaryConditions {
   std::vector<int> dirichlet_labels;                 // velocity prescribed here

@@ -4,7 +4,7 @@
 
 #include "common/interrupt.hpp"
 #include "io/atomic_file.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "fem/integration.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

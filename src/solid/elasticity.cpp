@@ -1,6 +1,5 @@
 #include "solid/elasticity.hpp"
 
-#include <algorithm>
 #include <vector>
 
 #include "fem/integration.hpp"
@@ -9,14 +8,6 @@ namespace fsi {
 
 Lame Lame::from_young_poisson(double E, double nu) {
   return {nu * E / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
-}
-
-std::vector<int> both_components(const std::vector<int>& nodes, int n) {
-  std::vector<int> dofs;
-  for (int node : nodes)
-    for (int c = 0; c < 2; ++c) dofs.push_back(dof(node, c, n));
-  std::sort(dofs.begin(), dofs.end());
-  return dofs;
 }
 
 SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
@@ -37,23 +28,6 @@ SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
   return A;
 }
 
-SparseMatrix assemble_vector_mass(const Mesh& mesh) {
-  const int nv = mesh.num_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(18 * mesh.triangles.size());
-  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
-    const auto& tri = mesh.triangles[t];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)  // ∫ λ_a λ_b = |T|(1 + δ_ab)/12
-        for (int c = 0; c < 2; ++c)
-          entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], c, nv),
-                               T.area * (a == b ? 2.0 : 1.0) / 12.0);
-  });
-  SparseMatrix M(2 * nv, 2 * nv);
-  M.setFromTriplets(entries.begin(), entries.end());
-  return M;
-}
-
 SparseMatrix assemble_divergence(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
   std::vector<Eigen::Triplet<double>> entries;
@@ -68,37 +42,6 @@ SparseMatrix assemble_divergence(const Mesh& mesh) {
   SparseMatrix B(2 * nv, nv);
   B.setFromTriplets(entries.begin(), entries.end());
   return B;
-}
-
-Eigen::VectorXd assemble_volume_load(const Mesh& mesh, const VectorField& f, int degree) {
-  const int nv = mesh.num_vertices();
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
-  integrate_on_triangles(mesh, triangle_rule(degree), [&](int t, const P1Triangle&, const TrianglePoint& q) {
-    const auto& tri = mesh.triangles[t];
-    const Point fq = f(q.x) * q.dx;
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 2; ++c) b[dof(tri[a], c, nv)] += fq[c] * q.lambda[a];
-  });
-  return b;
-}
-
-Eigen::VectorXd assemble_surface_load(const Mesh& mesh, int label, const VectorField& h,
-                                      int points) {
-  const int nv = mesh.num_vertices();
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * nv);
-  integrate_on_edges(mesh, mesh.edges_on(label), gauss_legendre(points), [&](const BoundaryEdge& e, const EdgePoint& q) {
-    const Point hq = h(q.x) * q.ds;
-    for (int c = 0; c < 2; ++c) {
-      b[dof(e.v[0], c, nv)] += hq[c] * q.phi[0];
-      b[dof(e.v[1], c, nv)] += hq[c] * q.phi[1];
-    }
-  });
-  return b;
-}
-
-Eigen::VectorXd component(const Eigen::VectorXd& u, int c) {
-  const Eigen::Index nv = u.size() / 2;
-  return u.segment(c * nv, nv);
 }
 
 }  // namespace fsi

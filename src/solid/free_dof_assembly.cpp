@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "fem/quadrature.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 
 namespace fsi {
 

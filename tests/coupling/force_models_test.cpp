@@ -19,7 +19,7 @@
 
 #include "coupling/body_fitted_force.hpp"
 #include "coupling/force_transfer.hpp"
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi::force_models_test {

@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 #include <random>
 
-#include "solid/elasticity.hpp"
+#include "fem/vector_p1.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi::relaxation_test {
