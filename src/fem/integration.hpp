@@ -6,6 +6,7 @@
 // for term, so that every result stays bit for bit (Table 1).
 #pragma once
 
+#include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
@@ -19,6 +20,22 @@ namespace fsi {
 template <class Kernel>
 void for_each_triangle(const Mesh& mesh, Kernel&& kernel) {
   for (int t = 0; t < mesh.num_triangles(); ++t) kernel(t, P1Triangle(mesh, t));
+}
+
+// The sparse matrix (rows × cols) of what kernel(t, T, add) adds on each triangle,
+// add(row, col, value), reserving `per_triangle` entries each: the triplet scaffolding
+// of every P1 matrix, written once. Duplicates are summed in the order they were added,
+// as the loops it replaced did, so the matrices stay bit for bit.
+template <class Kernel>
+Eigen::SparseMatrix<double> assemble_on_triangles(const Mesh& mesh, int rows, int cols, int per_triangle,
+                                                  Kernel&& kernel) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(per_triangle) * mesh.triangles.size());
+  const auto add = [&entries](int row, int col, double value) { entries.emplace_back(row, col, value); };
+  for_each_triangle(mesh, [&](int t, const P1Triangle& T) { kernel(t, T, add); });
+  Eigen::SparseMatrix<double> A(rows, cols);
+  A.setFromTriplets(entries.begin(), entries.end());
+  return A;
 }
 
 // A point of a triangle rule: barycentric coordinates (the P1 shape values), the

@@ -17,19 +17,12 @@ std::vector<int> both_components(const std::vector<int>& nodes, int n) {
 
 SparseMatrix assemble_vector_mass(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(18 * mesh.triangles.size());
-  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
+  return assemble_on_triangles(mesh, 2 * nv, 2 * nv, 18, [&](int t, const P1Triangle& T, const auto& add) {
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)  // ∫ λ_a λ_b = |T|(1 + δ_ab)/12
-        for (int c = 0; c < 2; ++c)
-          entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], c, nv),
-                               T.area * (a == b ? 2.0 : 1.0) / 12.0);
+        for (int c = 0; c < 2; ++c) add(dof(tri[a], c, nv), dof(tri[b], c, nv), T.area * (a == b ? 2.0 : 1.0) / 12.0);
   });
-  SparseMatrix M(2 * nv, 2 * nv);
-  M.setFromTriplets(entries.begin(), entries.end());
-  return M;
 }
 
 Eigen::VectorXd assemble_volume_load(const Mesh& mesh, const VectorField& f, int degree) {

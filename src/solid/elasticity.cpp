@@ -12,36 +12,25 @@ Lame Lame::from_young_poisson(double E, double nu) {
 
 SparseMatrix assemble_elasticity(const Mesh& mesh, const Lame& lame) {
   const int nv = mesh.num_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(36 * mesh.triangles.size());
-  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
+  return assemble_on_triangles(mesh, 2 * nv, 2 * nv, 36, [&](int t, const P1Triangle& T, const auto& add) {
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
         for (int c = 0; c < 2; ++c)
           for (int d = 0; d < 2; ++d)
-            entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv),
-                                 T.area * elasticity_entry(lame, T.grad.row(a), T.grad.row(b), c, d));
+            add(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * elasticity_entry(lame, T.grad.row(a), T.grad.row(b), c, d));
   });
-  SparseMatrix A(2 * nv, 2 * nv);
-  A.setFromTriplets(entries.begin(), entries.end());
-  return A;
 }
 
 SparseMatrix assemble_divergence(const Mesh& mesh) {
   const int nv = mesh.num_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(18 * mesh.triangles.size());
-  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
+  return assemble_on_triangles(mesh, 2 * nv, nv, 18, [&](int t, const P1Triangle& T, const auto& add) {
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 2; ++c)
         for (int k = 0; k < 3; ++k)  // ∫ ∂_c λ_a λ_k = ∂_c λ_a |T|/3
-          entries.emplace_back(dof(tri[a], c, nv), tri[k], T.grad(a, c) * T.area / 3.0);
+          add(dof(tri[a], c, nv), tri[k], T.grad(a, c) * T.area / 3.0);
   });
-  SparseMatrix B(2 * nv, nv);
-  B.setFromTriplets(entries.begin(), entries.end());
-  return B;
 }
 
 }  // namespace fsi

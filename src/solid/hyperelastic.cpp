@@ -153,22 +153,16 @@ Eigen::VectorXd internal_force(const Mesh& mesh, const Material& m, const Eigen:
 
 SparseMatrix tangent_stiffness(const Mesh& mesh, const Material& m, const Eigen::VectorXd& u) {
   const int nv = mesh.num_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(36 * mesh.triangles.size());
-  for_each_triangle(mesh, [&](int t, const P1Triangle& T) {
+  return assemble_on_triangles(mesh, 2 * nv, 2 * nv, 36, [&](int t, const P1Triangle& T, const auto& add) {
     const Matrix2 F = deformation_gradient(mesh, t, u);
     const auto& tri = mesh.triangles[t];
     for (int b = 0; b < 3; ++b)
       for (int d = 0; d < 2; ++d) {  // column (b, d): dP along ∇(φ_b e_d)
         const Matrix2 dP = m.stress_derivative(F, basis_gradient(T, b, d));
         for (int a = 0; a < 3; ++a)
-          for (int c = 0; c < 2; ++c)
-            entries.emplace_back(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * dP.row(c).dot(T.grad.row(a)));
+          for (int c = 0; c < 2; ++c) add(dof(tri[a], c, nv), dof(tri[b], d, nv), T.area * dP.row(c).dot(T.grad.row(a)));
       }
   });
-  SparseMatrix K(2 * nv, 2 * nv);
-  K.setFromTriplets(entries.begin(), entries.end());
-  return K;
 }
 
 }  // namespace fsi
