@@ -27,7 +27,7 @@ void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {
   if (chi.size() != chi_.size()) throw std::invalid_argument("set_chi: one value per triangle");
   if (chi != chi_) {
     chi_ = chi;
-    chi_changed_ = true;
+    ++version_;
   }
 }
 
@@ -35,26 +35,33 @@ void PenalisedStokes::set_eps(double eps) {
   if (eps != eps_) {
     strategy_->settle();  // a deferred expansion's bubbles need the old ε
     eps_ = eps;
-    chi_changed_ = true;
+    ++version_;
   }
+}
+
+void PenalisedStokes::set_body_force(const VectorField& f) {
+  strategy_->settle();  // a deferred expansion's bubbles need the old loads
+  assembler_.set_body_force(f);
+  strategy_->load_changed();
+  ++version_;
 }
 
 void PenalisedStokes::reset() {
   solved_once_ = false;
-  chi_changed_ = true;
+  ++version_;
   chi_.setZero();
   timing_ = FluidTiming{};
   strategy_->new_run();
 }
 
 const FluidSolution& PenalisedStokes::solve(SampledTriangles sampled) {
-  if (!chi_changed_) {
+  if (solved_version_ == version_) {
     ++timing_.reused;
     return solution(sampled);
   }
   strategy_->solve(chi_, eps_, sampled);
   solved_once_ = true;
-  chi_changed_ = false;
+  solved_version_ = version_;
   solved_chi_ = chi_;
   return solution_;
 }

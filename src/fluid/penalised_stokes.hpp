@@ -54,6 +54,8 @@ class PenalisedStokes {
   const Eigen::VectorXd& chi() const { return chi_; }
   // A new penalty ε (the pattern and its symbolic analysis are kept).
   void set_eps(double eps);
+  // A new body force f_F (the same χ may follow: the next solve solves again).
+  void set_body_force(const VectorField& f);
   // Where χ is expected to go (per triangle, as χ; empty: nowhere known), e.g. the
   // structure under its applied loads alone: the substructured solve's first near
   // region covers it too.
@@ -66,8 +68,8 @@ class PenalisedStokes {
   // far-field factorisation (χ = 0 there: they hold for any ε) if it covers the first χ.
   void continue_last_run() { strategy_->continue_last_run(); }
 
-  // Solves for the current χ; if χ did not change since the last solve, returns the
-  // previous solution without refactorising. The fields are exact at least on the
+  // Solves for the current problem; if nothing of it (χ, ε, the load) changed since
+  // the last solve, returns the previous solution without refactorising. The fields are exact at least on the
   // triangles `sampled` (null: everywhere); the substructured solve may leave the
   // rest for later (FluidSolution::exact_on). Throws SolverFailure.
   const FluidSolution& solve(SampledTriangles sampled = nullptr);
@@ -100,7 +102,10 @@ class PenalisedStokes {
   std::unique_ptr<StokesSolveStrategy> strategy_;
   Eigen::VectorXd chi_;
   double eps_;
-  bool chi_changed_ = true, solved_once_ = false;
+  // The problem's version: any change of χ, ε or the load makes a new one; a solution
+  // is reused only for the version it was solved for.
+  long version_ = 0, solved_version_ = -1;
+  bool solved_once_ = false;
   Eigen::VectorXd solved_chi_;
   FluidSolution solution_;
   FluidTiming timing_;

@@ -45,12 +45,8 @@ StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField&
   if (order_now) order_in_background();  // it needs the mesh only
   const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
   geometry_.reserve(nt);
-  loads_.reserve(nt);
-  const TriangleRule rule = triangle_rule(6);  // bubble (degree 3) × smooth f
-  for (int t = 0; t < nt; ++t) {
-    geometry_.emplace_back(mesh, t);
-    loads_.push_back(element_load(geometry_.back(), f, rule));
-  }
+  for (int t = 0; t < nt; ++t) geometry_.emplace_back(mesh, t);
+  set_body_force(f);
 
   // Prescribed velocities on the Dirichlet labels.
   z_fixed_ = Eigen::VectorXd::Zero(3 * nv);
@@ -137,6 +133,14 @@ void StokesAssembler::build_whole_pattern() {
         slot_[81 * static_cast<std::size_t>(t) + 9 * i + j] = static_cast<int>(pos - inner);
       }
 
+}
+
+void StokesAssembler::set_body_force(const VectorField& f) {
+  const TriangleRule rule = triangle_rule(6);  // bubble (degree 3) × smooth f
+  loads_.clear();
+  loads_.reserve(geometry_.size());
+  for (const P1Triangle& T : geometry_) loads_.push_back(element_load(T, f, rule));
+  assembled_ = false;  // K is unchanged, but rhs_ holds the old loads
 }
 
 // Adds sign × (the condensed element of triangle t with penalty κ) to K and rhs.

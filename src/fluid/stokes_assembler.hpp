@@ -53,6 +53,8 @@ class StokesAssembler {
 
   const Mesh& mesh() const { return mesh_; }
   double mu() const { return mu_; }
+  // A new body force f (its element loads); the next assemble() assembles everything.
+  void set_body_force(const VectorField& f);
   int unknowns() const { return static_cast<int>(free_.size()); }
   long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
 

@@ -50,6 +50,8 @@ class StokesSolveStrategy {
   virtual void expect(Eigen::VectorXd /*chi_hint*/) {}
   // A new run (what it keeps for the next one: see the strategy).
   virtual void new_run() {}
+  // The assembler's loads changed (after settle()): what was condensed from them is stale.
+  virtual void load_changed() {}
   // The new run starts from the last run's state (a warm start): what the last run
   // ended with may serve its first solve (see the strategy).
   virtual void continue_last_run() {}
@@ -90,6 +92,8 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   // The run's first region is the last run's if it covers the first χ (however it
   // rounds: a warm start is not a run of its own), its far field not refactorised.
   void continue_last_run() override { continue_region_ = true; }
+  // The far field's condensed load is the old one: the next solve builds a new region.
+  void load_changed() override;
   std::string name() const override { return whole_.name() + "+schur"; }
   const RegionSchurSolver* region() const override { return region_.get(); }
 

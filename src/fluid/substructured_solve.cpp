@@ -129,6 +129,13 @@ void SubstructuredSolve::expect(Eigen::VectorXd chi_hint) {
   hint_ = std::move(chi_hint);
 }
 
+void SubstructuredSolve::load_changed() {
+  region_.reset();
+  pending_expansion_ = false;
+  first_of_run_ = true;
+  continue_region_ = false;
+}
+
 void SubstructuredSolve::new_run() {
   whole_.new_run();
   pending_expansion_ = false;
