@@ -11,8 +11,8 @@
 #include <toml++/toml.h>
 #include <vector>
 
-#include "io/case.hpp"
 #include "io/case_reader.hpp"
+#include "mesh/mesh.hpp"  // Point
 
 namespace fsi::case_detail {
 

@@ -7,17 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "io/colour.hpp"  // Rgb, viridis
 #include "mesh/mesh.hpp"
 
 typedef struct _cairo cairo_t;
 typedef struct _cairo_surface cairo_surface_t;
 
 namespace fsi {
-
-using Rgb = std::array<double, 3>;
-
-// Viridis colour map, t in [0,1] (clamped).
-Rgb viridis(double t);
 
 struct WorldBox {
   double x_min, x_max, y_min, y_max;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/figure.hpp"
+#include "io/colour.hpp"
 
 namespace fsi {
 namespace {

@@ -15,13 +15,6 @@ MeshGenerator mesh_generator(const std::string& name) {
   throw std::invalid_argument("\"lattice\" or \"gmsh\"");
 }
 
-double reference_length(double extent) {
-  if (!std::isfinite(extent) || !(extent > 0) || (extent >= 0x1p-8 && extent <= 0x1p8)) return 1;
-  int exponent = 0;
-  std::frexp(extent, &exponent);
-  return std::ldexp(1.0, exponent);
-}
-
 std::vector<int> hole_labels(const Mesh& mesh) {
   // Sigma_5_i first: a file read for [[obstacles]] may also hold Sigma_5, empty.
   std::vector<int> labels;

@@ -3,13 +3,12 @@
 // by Gmsh (mesh/gmsh_io.hpp: the program's meshes before, kept to reproduce them).
 #pragma once
 
-#include <array>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/mesh_geometry.hpp"
 
 namespace fsi {
 
@@ -18,44 +17,6 @@ enum class MeshGenerator { lattice, gmsh };
 // "lattice" | "gmsh"; throws std::invalid_argument naming the allowed values.
 MeshGenerator mesh_generator(const std::string& name);
 
-// Ω_S0 = (0,L)×(0,H); boundary labels Gamma_D (x = 0), Gamma_C ((xc_min,xc_max)
-// on y = 0, with vertices exactly at both ends), Gamma_N (the rest).
-struct StructureGeometry {
-  double L, H, xc_min, xc_max;
-  double h;  // target element size
-};
-
-// A hole of D: the disk B((x0, y0), r), or the polygon `corners` (a simple one, either
-// orientation) if it has any. A polygon's boundary is a loop of mesh edges through its
-// corners, each side cut into at least two.
-struct FluidHole {
-  double x0 = 0, y0 = 0, r = 0;
-  std::vector<Point> corners = {};
-};
-
-// D = (0,L1)×(−H2,H1) minus the disk B((x0,y0),r) (or minus `holes`); labels Sigma_1
-// (left), Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle; or
-// Sigma_5_1, Sigma_5_2, ... the holes).
-//
-// With h_near > 0, triangles of size h_near inside the box `band` ([x_min, y_min,
-// x_max, y_max]), growing linearly by kBandGrowth per unit distance from it up to h:
-// the band refinement of fluid.h_near.
-struct FluidGeometry {
-  double L1, H1, H2, x0, y0, r;
-  double h;
-  double h_near = 0;
-  std::array<double, 4> band{};
-  // [[obstacles]] (SPEC §9): these disks and polygons, any number, are D's holes
-  // instead of the one above, labelled Sigma_5_1, Sigma_5_2, ... in this order.
-  std::optional<std::vector<FluidHole>> holes = std::nullopt;
-};
-
-// The size's growth away from the band, per unit length. Measured on §7.2 (docs/
-// validation.md, "Band refinement"): halving it or the far size h moves max |u| by
-// under 0.5 µm at h_near = 0.001, while the triangle count stays within 10 % of the
-// band's own.
-inline constexpr double kBandGrowth = 0.2;
-
 // The labels of D's holes in a mesh of generate_fluid_mesh or a file: Sigma_5_1,
 // Sigma_5_2, ... if there are any, else Sigma_5 (none for a box without holes).
 std::vector<int> hole_labels(const Mesh& mesh);
@@ -63,12 +24,5 @@ std::vector<int> hole_labels(const Mesh& mesh);
 // Throw MeshError if the mesh cannot be made.
 Mesh generate_structure_mesh(const StructureGeometry& g, MeshGenerator by = MeshGenerator::lattice);
 Mesh generate_fluid_mesh(const FluidGeometry& g, MeshGenerator by = MeshGenerator::lattice);
-
-// Generators' tolerances are absolute in places (Gmsh's: the §7.1 beam scaled by 1e20
-// or 1e-100 made it throw, measured), and squared lengths overflow far from 1: a
-// geometry is meshed in units of a power of two near its extent, exact to divide and
-// multiply by (the vertices stay exactly at the ends of Γ_C). Within [2^-8, 2^8] the
-// unit is 1: the lengths as given.
-double reference_length(double extent);
 
 }  // namespace fsi

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh/generated_mesh.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/mesh_geometry.hpp"
 
 namespace fsi {
 

@@ -1,6 +1,7 @@
 #include "run/fluid_setup.hpp"
 
 #include "common/errors.hpp"
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/fluid_band.hpp"
 #include "run/hole_checks.hpp"

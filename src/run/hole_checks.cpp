@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "mesh/polygon.hpp"
-#include "run/mesh_checks.hpp"
+#include "run/point_text.hpp"
 
 namespace fsi {
 namespace {

@@ -10,6 +10,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "run/contact_gap.hpp"
 #include "run/hole_checks.hpp"
+#include "run/point_text.hpp"
 #include "solid/obstacle.hpp"
 
 namespace fsi {
@@ -217,13 +218,6 @@ void check_disk_hole(const Case& c, const Mesh& mesh) {
 
 }  // namespace
 
-std::string point_text(const Point& p) {
-  std::string text = "(";  // built step by step: "(" + std::string trips GCC 12's -Wrestrict
-  text += shortest(p.x());
-  text += ", ";
-  text += shortest(p.y());
-  return text + ")";
-}
 
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
                     const std::vector<std::string>& curves, const std::string& surface, double max_triangles,

@@ -34,8 +34,6 @@ void check_structure_mesh(const Case& c, const Mesh& mesh);
 // [[obstacles]]: a hole per obstacle, check_mesh_holes), every boundary edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
 
-// "(x, y)" in the shortest digits, for messages.
-std::string point_text(const Point& p);
 
 // The first boundary edge of the triangulation (used by one triangle) that carries
 // no label, as its two vertex indices; {-1, -1} if none.

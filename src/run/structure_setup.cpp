@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/mesh_checks.hpp"
 #include "solid/p2_elasticity.hpp"

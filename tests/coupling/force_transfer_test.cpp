@@ -10,6 +10,7 @@
 #include "coupling/force_transfer.hpp"
 #include "fem/p1.hpp"
 #include "fem/quadrature.hpp"
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "support/structured_mesh.hpp"
 

@@ -7,6 +7,7 @@
 #include "fem/quadrature.hpp"
 #include "fluid/chi.hpp"
 #include "fluid/fluid_field.hpp"
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "support/structured_mesh.hpp"
 

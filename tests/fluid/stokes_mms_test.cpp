@@ -7,6 +7,7 @@
 
 #include <numbers>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "support/norms.hpp"
 #include "support/stokes_norms.hpp"

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 
 namespace fsi::band_refinement_test {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <thread>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "support/sanitizers.hpp"
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/polygon.hpp"
 

@@ -13,6 +13,7 @@
 
 #include <cmath>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "mesh/polygon.hpp"
 #include "run/fluid_setup.hpp"

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"

@@ -4,6 +4,7 @@
 // Theory for P1: ‖u − u_h‖_{L²} = O(h²), |u − u_h|_{H¹} = O(h).
 #include <gtest/gtest.h>
 
+#include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "qp/active_set_solver.hpp"
 #include "solid/contact_solver.hpp"
