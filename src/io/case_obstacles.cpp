@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "io/case.hpp"
 #include "io/case_section.hpp"
 #include "mesh/polygon.hpp"
 

@@ -3,6 +3,7 @@
 // (run/mesh_checks.cpp).
 #include <string>
 
+#include "io/case.hpp"
 #include "io/case_section.hpp"
 
 namespace fsi::case_detail {
