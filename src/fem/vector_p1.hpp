@@ -1,6 +1,6 @@
 // Vector-valued P1 fields on a mesh, the vocabulary the structure, the fluid's force
 // and the coupling share (issue 28): the paper's dof numbering φ_i = (φ_i, 0),
-// φ_{nv+i} = (0, φ_i), so dof(i, c) = c·nv + i; a vector vector's components; the
+// φ_{nv+i} = (0, φ_i), so dof(i, c) = c·nv + i; a dof vector's two components; the
 // vector mass matrix; volume and surface loads of a vector field.
 #pragma once
 

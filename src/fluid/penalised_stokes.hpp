@@ -69,9 +69,10 @@ class PenalisedStokes {
   void continue_last_run() { strategy_->continue_last_run(); }
 
   // Solves for the current problem; if nothing of it (χ, ε, the load) changed since
-  // the last solve, returns the previous solution without refactorising. The fields are exact at least on the
-  // triangles `sampled` (null: everywhere); the substructured solve may leave the
-  // rest for later (FluidSolution::exact_on). Throws SolverFailure.
+  // the last solve, returns the previous solution without refactorising. The fields
+  // are exact at least on the triangles `sampled` (null: everywhere); the
+  // substructured solve may leave the rest for later (FluidSolution::exact_on).
+  // Throws SolverFailure.
   const FluidSolution& solve(SampledTriangles sampled = nullptr);
   // The last successful solution (after a failed solve: the one before), made exact
   // on `sampled` (null: everywhere). Throws SolverFailure if that needs a solve that

@@ -218,7 +218,6 @@ void check_disk_hole(const Case& c, const Mesh& mesh) {
 
 }  // namespace
 
-
 Mesh read_case_mesh(const Case& c, const std::string& key, const std::string& path,
                     const std::vector<std::string>& curves, const std::string& surface, double max_triangles,
                     const std::vector<std::string>& optional_curves) {

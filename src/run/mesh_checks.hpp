@@ -34,7 +34,6 @@ void check_structure_mesh(const Case& c, const Mesh& mesh);
 // [[obstacles]]: a hole per obstacle, check_mesh_holes), every boundary edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
 
-
 // The first boundary edge of the triangulation (used by one triangle) that carries
 // no label, as its two vertex indices; {-1, -1} if none.
 std::array<int, 2> unlabelled_boundary_edge(const Mesh& mesh);
