@@ -89,7 +89,7 @@ void BodyFittedFluid::check_gap(const std::vector<Point>& x, double& gap) const 
   }
 }
 
-Mesh BodyFittedFluid::remesh(const std::vector<Point>& x, BodyFittedStep& step) {
+Mesh BodyFittedFluid::remesh(const std::vector<Point>& x, BodyFittedSolve& step) {
   try {
     base_ = std::make_unique<Mesh>(generate_fluid_mesh_around({p_.box, x}));
     const double tolerance = 1e-9 * std::max({p_.box.L1, p_.box.H1 + p_.box.H2, 1e-300});
@@ -109,7 +109,7 @@ Mesh BodyFittedFluid::remesh(const std::vector<Point>& x, BodyFittedStep& step) 
 
 // D \ φ(Ω_S0) with the outline's points as vertices: the last mesh moved with the
 // outline if it moved little since that mesh was made, else a new one.
-Mesh BodyFittedFluid::fluid_mesh(const std::vector<Point>& x, BodyFittedStep& step) {
+Mesh BodyFittedFluid::fluid_mesh(const std::vector<Point>& x, BodyFittedSolve& step) {
   if (!base_) return remesh(x, step);
   double move = 0;
   for (std::size_t k = 0; k < x.size(); ++k)
@@ -124,8 +124,8 @@ Mesh BodyFittedFluid::fluid_mesh(const std::vector<Point>& x, BodyFittedStep& st
   return moved;
 }
 
-BodyFittedStep BodyFittedFluid::solve(const Eigen::VectorXd& u) {
-  BodyFittedStep step;
+BodyFittedSolve BodyFittedFluid::solve(const Eigen::VectorXd& u) {
+  BodyFittedSolve step;
   const std::vector<Point> x = deformed_outline(u);
   check_gap(x, step.gap);
   {

@@ -47,7 +47,7 @@ struct BodyFittedFluidParams {
   double move_limit = 0.25;
 };
 
-struct BodyFittedStep {
+struct BodyFittedSolve {
   std::unique_ptr<Mesh> mesh;  // D \ φ(Ω_S0)
   FluidSolution solution;
   std::vector<int> outline_nodes;  // the fluid vertex of each outline point
@@ -67,7 +67,7 @@ class BodyFittedFluid {
 
   // Throws SolverFailure if the gap is too small, or meshing or the solve fails.
   // Not const: it keeps the last Gmsh mesh, to move it for the next u.
-  BodyFittedStep solve(const Eigen::VectorXd& u);
+  BodyFittedSolve solve(const Eigen::VectorXd& u);
 
   const std::vector<int>& outline() const { return outline_; }
   const BodyFittedFluidParams& params() const { return p_; }
@@ -75,8 +75,8 @@ class BodyFittedFluid {
  private:
   std::vector<Point> deformed_outline(const Eigen::VectorXd& u) const;
   void check_gap(const std::vector<Point>& x, double& gap) const;
-  Mesh fluid_mesh(const std::vector<Point>& x, BodyFittedStep& step);
-  Mesh remesh(const std::vector<Point>& x, BodyFittedStep& step);
+  Mesh fluid_mesh(const std::vector<Point>& x, BodyFittedSolve& step);
+  Mesh remesh(const std::vector<Point>& x, BodyFittedSolve& step);
 
   BodyFittedFluidParams p_;
   const Mesh& reference_;

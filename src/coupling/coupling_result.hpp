@@ -22,7 +22,7 @@ struct IterationRecord {
   bool fluid_reused = false;  // χ unchanged: previous fluid solution reused
   double t_chi = 0, t_fluid = 0, t_transfer = 0, t_structure = 0;
   int newton_steps = 0;  // a nonlinear structure's Newton steps in this pass (0: linear)
-  // fluid.method = "body-fitted" (BodyFittedCoupling): the pass's fluid mesh and the
+  // fluid.method = "body-fitted" (BodyFittedStep): the pass's fluid mesh and the
   // time to make it (0 for the penalised method's fixed mesh).
   int fluid_triangles = 0;
   bool remeshed = false;  // a new Gmsh mesh (else the last one moved with the structure)

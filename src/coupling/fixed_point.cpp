@@ -10,13 +10,13 @@
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
 #include "coupling/fixed_point_loop.hpp"
-#include "coupling/penalised_map.hpp"
+#include "coupling/coupled_map.hpp"
 
 namespace fsi {
 
-FixedPointCoupling::FixedPointCoupling(Parts parts, Relaxation& relaxation, double tol, int max_iterations)
-    : p_(parts), relaxation_(relaxation), tol_(tol), max_iterations_(max_iterations),
-      M_(assemble_vector_mass(parts.structure.mesh())) {}
+FixedPointCoupling::FixedPointCoupling(FluidStep& fluid, StructureStep& structure, const Eigen::VectorXd& b_applied,
+                                       Relaxation& relaxation, const SparseMatrix& M, double tol, int max_iterations)
+    : H_(fluid, structure, b_applied), relaxation_(relaxation), tol_(tol), max_iterations_(max_iterations), M_(M) {}
 
 std::string convergence_warning(const CouplingResult& r, double tol) {
   const std::size_t n = r.history.size();
@@ -46,13 +46,21 @@ std::string convergence_warning(const CouplingResult& r, double tol) {
 }
 
 CouplingResult FixedPointCoupling::run() {
-  PenalisedMap H(p_);
-  H.relinearise = relinearise;
-  FixedPointLoop loop(H, relaxation_, M_, tol_, max_iterations_);
+  H_.structure().begin();
+  return window(initial);
+}
+
+CouplingResult FixedPointCoupling::next_window(const Eigen::VectorXd& u_start) {
+  relaxation_.end_window();
+  return window(u_start);
+}
+
+CouplingResult FixedPointCoupling::window(const Eigen::VectorXd& u0) {
+  FixedPointLoop loop(H_, relaxation_, M_, tol_, max_iterations_);
   loop.progress = progress;
   loop.observe = observe;
   loop.inexact_fraction = inexact_fraction;
-  return loop.run(initial);
+  return loop.run(u0);
 }
 
 }  // namespace fsi

@@ -25,23 +25,21 @@ CouplingResult FixedPointLoop::run(const Eigen::VectorXd& u0) {
   } catch (const SolverFailure& e) {
     result.failure = e.what();
   }
-  H_.structure().newton_step_tol = 0;
   result.projections = relaxation_.projections();
   return result;
 }
 
 void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) {
-  Eigen::VectorXd u = initial_iterate(H_.structure(), u0);
+  Eigen::VectorXd u = initial_iterate(H_.structure().solver(), u0);
   const ContactSolution* warm = nullptr;
-  ElasticContactSolver& structure = H_.structure();
-  const bool inexact = structure.material().model != MaterialModel::linear;
+  const bool inexact = H_.structure().nonlinear();
   double last_move = 0;  // the last increment's largest dof (m)
   for (int k = 1; k <= max_iterations_; ++k) {
     result.iterations = k;
     IterationRecord rec;
     rec.iteration = k;
-    structure.newton_step_tol = inexact && k > 1 ? inexact_fraction * last_move : 0;
-    MapValue value = H_(u, k, warm, rec);  // steps 2–4
+    const Pass pass{k, warm, inexact && k > 1 ? inexact_fraction * last_move : 0};
+    MapValue value = H_(u, pass, rec);  // steps 2–4
     result.structure = std::move(value.structure);  // only a good state replaces the last one
     result.fluid_load = std::move(value.fluid_load);
     const Eigen::VectorXd d = result.structure.u - u;  // step 5
@@ -55,7 +53,7 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
     result.final_increment = rec.increment;
     result.final_norm = std::sqrt(result.structure.u.dot(M_ * result.structure.u));
     const bool converged = rec.increment < tol_;
-    if (converged && structure.newton_step_tol > 0 && value.load.size()) solve_exactly(result, value.load, k, rec);
+    if (converged && pass.newton_step_tol > 0 && value.load.size()) solve_exactly(result, value.load, k, rec);
     result.history.push_back(rec);  // recorded before relaxing: kept if that fails
     if (!converged && k < max_iterations_) u = relaxed_iterate(relaxation_, u, result.structure.u, k, rec, result);
     if (progress) {
@@ -81,10 +79,9 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
 // The converged pass's structure again, from its inexact state, to Newton's full
 // tolerance: the state and the residual the run reports (SPEC §11).
 void FixedPointLoop::solve_exactly(CouplingResult& result, const Eigen::VectorXd& load, int k, IterationRecord& rec) {
-  ElasticContactSolver& structure = H_.structure();
-  structure.newton_step_tol = 0;
   const Stopwatch clock;
-  ContactSolution exact = guarded("the contact QP", k, [&] { return structure.solve(load, &result.structure); });
+  ContactSolution exact =
+      guarded("the contact QP", k, [&] { return H_.structure().solve_again(load, result.structure); });
   if (!exact.u.allFinite()) throw SolverFailure("the contact QP failed at fixed-point iteration " + std::to_string(k) +
                                                 ": non-finite displacement");
   rec.newton_steps += exact.newton.steps;

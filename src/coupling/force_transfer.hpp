@@ -62,8 +62,8 @@ class FluidForce {
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
   // Where the fluid is sampled: the vertices of this mesh displaced by to_samples(u)
-  // (the reference mesh and u itself unless sampling > 1). P1 structures only.
-  const Mesh& sample_mesh() const { return mesh_; }
+  // (the reference mesh and u itself unless sampling > 1; a P2 space's nodal mesh).
+  const Mesh& sample_mesh() const { return space_ ? *nodes_ : mesh_; }
   Eigen::VectorXd to_samples(const Eigen::VectorXd& u) const;
 
  private:
@@ -76,6 +76,7 @@ class FluidForce {
 
   std::shared_ptr<const UniformRefinement> refinement_;  // sampling > 1 only
   const Mesh& mesh_;  // the integrals' mesh: the reference, or its refinement
+  std::shared_ptr<const Mesh> nodes_;  // P2: the space's nodal mesh (where the fields are sampled)
   const P2Space* space_ = nullptr;  // set for the P2 structure
   double mu_F_;
   double eps_;

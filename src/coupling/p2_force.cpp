@@ -74,6 +74,7 @@ double scalar_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen
 FluidForce::FluidForce(const P2Space& space, double mu_F, double eps, const VectorField& f_F,
                        ForceModel model)
     : mesh_(space.mesh()),
+      nodes_(std::make_shared<const Mesh>(nodal_mesh(space))),
       space_(&space),
       mu_F_(mu_F),
       eps_(eps),

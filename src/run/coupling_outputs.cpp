@@ -4,6 +4,10 @@
 
 #include "common/interrupt.hpp"
 #include "io/atomic_file.hpp"
+#include "io/vtu.hpp"
+#include "run/probes.hpp"
+#include "run/structure_outputs.hpp"
+#include "run/summary.hpp"
 #include "fem/vector_p1.hpp"
 
 namespace fsi {
@@ -56,16 +60,49 @@ int exit_status_of(const CouplingResult& r) {
   return !r.failure.empty() ? 1 : r.interrupted ? interrupted_exit_status() : r.converged ? 0 : 3;
 }
 
-RunMeasures coupled_measures(const Case& c, const CouplingResult& r, bool fluid_only) {
+RunMeasures coupled_measures(const Case& c, const CouplingResult& r) {
   RunMeasures m;
   m.converged = r.converged;
   m.status = status_of(r);
   m.failure = r.failure;
   m.convergence_warning = convergence_warning(r, c.coupling.tol);
   m.iterations = r.iterations;
-  if (!fluid_only) m.stop = RunMeasures::Stop{r.iterations - 1, r.final_increment, r.final_norm};
   m.displacement = RunMeasures::Displacement{max_displacement(r.structure.u), component(r.structure.u, 1).minCoeff()};
   return m;
+}
+
+RunMeasures::Stop coupled_stop(const CouplingResult& r) {
+  return {r.iterations - 1, r.final_increment, r.final_norm};
+}
+
+void add_structure_displacements(Json& j, const Case& c, const StructureSetup& s, const CouplingResult& r) {
+  j["tip_displacement"] = tip_displacement_json(c, s.mesh(), r.structure.u, s.p2());
+  add_displacement_at(j, c, s.mesh(), r.structure.u, s.p2());
+  j["structure_force"] = point_json(resultant(r.fluid_load));
+  j["structure_load"] = point_json(resultant_off(r.fluid_load, s.mesh(), s.mesh().label("Gamma_D")));
+}
+
+void add_coupled_structure(Json& j, const Case& c, const StructureSetup& s, const CouplingResult& r,
+                           const RunMeasures& m) {
+  j["contact"] = to_json(*m.contact);
+  add_gap_summary(j["contact"], c, s, r.structure);
+  j["kkt"] = to_json(r.structure.qp.kkt);
+  if (c.structure.model != "linear") j["newton"] = newton_json(r.structure.newton);  // the last pass's
+  j["relaxation"] = {{"scheme", c.coupling.scheme}, {"omega0", c.coupling.omega}, {"projections", r.projections}};
+}
+
+void write_coupled_files(RunOutputs& out, const Case& c, const StructureSetup& s, const CouplingResult& r,
+                         bool have_fluid, bool fluid_vtu_written, bool body_fitted) {
+  if (c.output.vtu && have_fluid) {
+    const bool structure_vtu = out.write("structure.vtu", [&](const std::string& p) {
+      write_structure_vtu(p, c, s, r.structure, true);
+    });
+    if (fluid_vtu_written && structure_vtu)
+      out.write("fsi.pvd", [&](const std::string& p) { write_pvd(p, {{"fluid.vtu", 0}, {"structure.vtu", 1}}); });
+  }
+  if (c.output.png && have_fluid)
+    out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, r.structure); });
+  out.write("history.csv", [&](const std::string& p) { write_history(p, r.history, body_fitted); });
 }
 
 }  // namespace fsi

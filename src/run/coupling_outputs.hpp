@@ -7,7 +7,9 @@
 
 #include "coupling/fixed_point.hpp"
 #include "io/case.hpp"
+#include "run/output_dir.hpp"
 #include "run/run_measures.hpp"
+#include "run/structure_setup.hpp"
 
 namespace fsi {
 
@@ -22,7 +24,22 @@ const char* status_of(const CouplingResult& r);
 // SPEC §8: 1 failed, 128 + signal interrupted, 0 converged, 3 iteration limit.
 int exit_status_of(const CouplingResult& r);
 // The measures of the loop's result r (its failure final: set any found after the
-// loop first): status, stop (unless fluid_only: no loop ran), the displacement of ũ.
-RunMeasures coupled_measures(const Case& c, const CouplingResult& r, bool fluid_only);
+// loop first): status, iterations, the displacement of ũ.
+RunMeasures coupled_measures(const Case& c, const CouplingResult& r);
+// The stop of a loop that ran (SPEC §5; the paper's k = iterations − 1).
+RunMeasures::Stop coupled_stop(const CouplingResult& r);
+
+// summary.json's tip_displacement, displacement_at, structure_force (the fluid's
+// load's resultant) and structure_load (the same off Γ_D) of the final state.
+void add_structure_displacements(Json& j, const Case& c, const StructureSetup& s, const CouplingResult& r);
+// The coupled structure's keys (SPEC §8, §9, §11): contact (with its gap), kkt,
+// newton (a nonlinear model's last pass) and relaxation.
+void add_coupled_structure(Json& j, const Case& c, const StructureSetup& s, const CouplingResult& r,
+                           const RunMeasures& m);
+// The coupled structure's files: structure.vtu and fsi.pvd (when the fluid is written:
+// `fluid_vtu_written`; never a .pvd that names a missing file), structure.png (beside a
+// fluid picture: `have_fluid`), and history.csv (write_history).
+void write_coupled_files(RunOutputs& out, const Case& c, const StructureSetup& s, const CouplingResult& r,
+                         bool have_fluid, bool fluid_vtu_written, bool body_fitted);
 
 }  // namespace fsi

@@ -8,7 +8,7 @@
 #include "common/format.hpp"
 #include "fem/point_locator.hpp"
 #include "mesh/gmsh_io.hpp"
-#include "run/contact_gap.hpp"
+#include "run/case_contact.hpp"
 #include "run/hole_checks.hpp"
 #include "run/point_text.hpp"
 #include "solid/obstacle.hpp"
@@ -155,7 +155,7 @@ void check_corners_outside(const Case& c, const Mesh& mesh, const std::string& w
 
 void check_outside_disk(const Case& c, const Mesh& mesh, const std::string& what) {
   if (c.obstacles_given) {  // [[obstacles]]: every vertex outside every obstacle
-    const ContactGap gap(c, mesh);
+    const ContactGap gap = case_contact_gap(c, mesh);
     const double d = gap.min_gap(mesh, Eigen::VectorXd::Zero(2 * mesh.num_vertices()), /*all_vertices=*/true);
     // Within kPolygonMargin · diam counts as touching, not inside: a polygon is grown by it.
     if (d < -kPolygonMargin * diameter(mesh) * (1 + 1e-9))

@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "io/case.hpp"
 
 namespace fsi {
 
@@ -83,6 +84,10 @@ std::string RunOutputs::failure() const {
 
 std::string RunOutputs::path(const std::string& name) const {
   return (std::filesystem::path(dir_) / name).string();
+}
+
+void write_case_toml(RunOutputs& out, const Case& c) {
+  out.write("case.toml", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << to_toml(c); }); });
 }
 
 }  // namespace fsi

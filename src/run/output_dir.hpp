@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/case.hpp"
 #include "run/summary.hpp"
 
 namespace fsi {
@@ -52,5 +53,8 @@ class RunOutputs {
   std::string dir_;
   std::vector<std::string> errors_;
 };
+
+// case.toml: the resolved case, every key, that reruns this run (io/case.hpp to_toml).
+void write_case_toml(RunOutputs& out, const Case& c);
 
 }  // namespace fsi

@@ -11,13 +11,13 @@ namespace {
 
 // A failure before any state worth keeping (meshing, set-up, the contact-only QP):
 // summary.json carries the inputs and the message.
-RunResult failed_run(const Case& c, const std::string& failure) {
+RunResult failed_run(const Case& c, const char* kind, const std::string& failure) {
   RunResult r;
   r.exit_status = 1;
   r.failure = failure;
   r.report = c.name + ": failed: " + failure;
   r.measures.failure = failure;  // and status "failed", nothing measured
-  Json j = summary_header(c);
+  Json j = summary_header(c, kind);
   j["converged"] = false;
   j["status"] = "failed";
   j["failure"] = failure;  // no "iterations": none ran to the end
@@ -37,23 +37,19 @@ void fail_writing(RunResult& r, const std::string& what) {
   r.failure = (r.failure.empty() ? "" : r.failure + "; ") + "writing the outputs: " + what;
 }
 
-}  // namespace
-
-Json summary_header(const Case& c) {
-  Json j;
-  j["name"] = c.name;
-  j["problem"] = !c.fluid ? "contact" : c.coupling.max_iterations == 0 || c.structure.shape == "none" ? "fluid" : "fsi";
-  j["parameters"] = to_json(c);
-  return j;
-}
-
-void write_outputs(const Case& c, RunResult& r, const std::function<void(RunOutputs&)>& files,
-                   const std::function<void(Json&)>& finalise) {
+// The run's directory (run/output_dir.hpp): summary.json as "writing", then the
+// problem's files (the "output" phase), then r.summary with its "timing_s". A failed
+// write turns r into a failure (exit status 1) naming the file and the reason; the
+// report keeps the numbers.
+void write_outputs(Problem& problem, const Case& c, RunResult& r, PhaseTimes& times, const Stopwatch& total) {
   RunOutputs out(c.output.dir);
   try {
-    out.begin(summary_header(c));
-    files(out);
-    finalise(r.summary);
+    out.begin(summary_header(c, problem.kind()));
+    {
+      ScopedPhase phase(times, "output");
+      problem.write(out);
+    }
+    finish_timing(r.summary, r.measures, times, total);
     r.summary = out.finish(r.summary);
   } catch (const OutputError& e) {
     fail_writing(r, e.what());
@@ -62,21 +58,48 @@ void write_outputs(const Case& c, RunResult& r, const std::function<void(RunOutp
   if (out.failed()) fail_writing(r, out.failure());
 }
 
-RunResult run_case(const Case& c, const RunOptions& options) {
-  check_output_dir(c.output.dir, c.output.dir_origin);
+RunResult run_steps(Problem& problem, const Case& c) {
+  PhaseTimes times;
+  const Stopwatch total;
+  problem.set_up(times);
+  problem.solve(times);
+  RunResult r;
+  problem.measure(r);
+  problem.summarise(r);
+  write_outputs(problem, c, r, times, total);
+  return r;
+}
+
+}  // namespace
+
+Json summary_header(const Case& c, const char* kind) {
+  Json j;
+  j["name"] = c.name;
+  j["problem"] = kind;
+  j["parameters"] = to_json(c);
+  return j;
+}
+
+RunResult run(Problem& problem, const Case& c) {
   try {
-    return c.fluid ? run_fsi_case(c, options) : run_contact_case(c, options);
+    return run_steps(problem, c);
   } catch (const InputError&) {
     throw;  // found before anything was written
   } catch (const SolverFailure& e) {
-    return failed_run(c, e.what());
+    return failed_run(c, problem.kind(), e.what());
   } catch (const OutputError& e) {
-    return failed_run(c, e.what());
+    return failed_run(c, problem.kind(), e.what());
   } catch (const std::bad_alloc&) {
-    return failed_run(c, "out of memory");
+    return failed_run(c, problem.kind(), "out of memory");
   } catch (const std::exception& e) {
-    return failed_run(c, std::string("internal error: ") + e.what());
+    return failed_run(c, problem.kind(), std::string("internal error: ") + e.what());
   }
+}
+
+RunResult run_case(const Case& c, const RunOptions& options) {
+  check_output_dir(c.output.dir, c.output.dir_origin);
+  const std::unique_ptr<Problem> problem = make_problem(c, options);
+  return run(*problem, c);
 }
 
 }  // namespace fsi

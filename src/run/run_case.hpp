@@ -8,6 +8,7 @@
 #include "common/fault.hpp"
 #include "common/timer.hpp"
 #include "io/case.hpp"
+#include "run/problem.hpp"
 #include "run/run_measures.hpp"
 #include "run/summary.hpp"
 
@@ -34,28 +35,17 @@ struct RunResult {
 };
 
 // Checks the output directory and the meshes against the case (InputError, exit 2:
-// nothing is written), then solves and writes. A failure after that never escapes
-// as an exception: summary.json says "status": "failed" with the message (and the
-// last good state where there is one) and the result has exit status 1.
+// nothing is written), then solves and writes: run(*make_problem(c, options), c).
 RunResult run_case(const Case& c, const RunOptions& options);
 
-// The contact-only problem of SPEC §2 (a case without [fluid]).
-RunResult run_contact_case(const Case& c, const RunOptions& options);
+// set_up → solve → measure → summarise → write (run/problem.hpp), each phase timed;
+// summary.json's "timing_s" holds them. A failure after validation never escapes as
+// an exception: summary.json says "status": "failed" with the message (and the last
+// good state where there is one) and the result has exit status 1.
+RunResult run(Problem& problem, const Case& c);
 
-// The coupled problem of SPEC §5; with coupling.max_iterations = 0 the fluid alone
-// around the structure at rest.
-RunResult run_fsi_case(const Case& c, const RunOptions& options);
-
-// structure.shape = "none" (run_fsi_case calls it): the fluid alone, no structure, and
-// the fluid's force on each obstacle.
-RunResult run_fluid_case(const Case& c, const RunOptions& options);
-
-// The same with fluid.method = "body-fitted" (run_fsi_case calls it): the fluid
-// remeshed around the deformed structure each pass, for configurations without contact.
-RunResult run_body_fitted_case(const Case& c, const RunOptions& options);
-
-// summary.json's first keys: name, problem ("contact", "fluid", "fsi"), parameters.
-Json summary_header(const Case& c);
+// summary.json's first keys: name, problem (Problem::kind), parameters.
+Json summary_header(const Case& c, const char* kind);
 
 // make() timed as the phase `name` of `times`, then the fault-injection point of that
 // name (tests make a phase fail there): one set-up step of a run.
@@ -67,12 +57,5 @@ auto in_phase(PhaseTimes& times, const char* name, Make&& make) {
   return made;
 }
 
-class RunOutputs;
-// Writes the run's directory (run/output_dir.hpp): summary.json as "writing", then
-// `files`, then r.summary after `finalise` (the output phase's timing). A failed
-// write turns r into a failure (exit status 1) naming the file and the reason; the
-// report keeps the numbers.
-void write_outputs(const Case& c, RunResult& r, const std::function<void(RunOutputs&)>& files,
-                   const std::function<void(Json&)>& finalise);
 
 }  // namespace fsi

@@ -91,13 +91,10 @@ void write_structure_vtu(const std::string& path, const Case& c, const Structure
   write_vtu(path, points, fields, vtu_format(c.output.vtu_format));
 }
 
-void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
-                         const ContactSolution& solution) {
-  const Mesh& ref = s.mesh();
-  const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
-  const Mesh def = displaced(ref, u1, u2);
-  const Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
-  // Frame: the structure before and after, and the top of the obstacle.
+namespace {
+
+// The frame: the structure before and after, and the top of the obstacle, padded by 6 %.
+WorldBox structure_frame(const Case& c, const Mesh& ref, const Mesh& def) {
   WorldBox box{INFINITY, -INFINITY, lowest_obstacle_top(c), -INFINITY};
   for (const Mesh* m : {&ref, &def})
     for (const Point& p : m->vertices) {
@@ -107,10 +104,13 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
       box.y_max = std::max(box.y_max, p.y());
     }
   const double pad = 0.06 * std::max(box.x_max - box.x_min, box.y_max - box.y_min);
-  box = {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
-  const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
-  const bool several = c.obstacles_given && c.obstacles.size() != 1;
-  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle" + (several ? "s" : ""));
+  return {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
+}
+
+// The two lines under the title: the load, material and mesh; the contact zone.
+void structure_notes(Figure& fig, const Case& c, const StructureSetup& s, const ContactSolution& solution,
+                     double max_u) {
+  const Mesh& ref = s.mesh();
   const ContactSummary cs = summarize_contact(*s.solver, solution);
   char line[256];
   std::snprintf(line, sizeof line,
@@ -118,7 +118,7 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
                 "max |u| = %.4g m",
                 c.structure.f.x(), c.structure.f.y(), c.structure.E, c.structure.nu, s.p2() ? "P2 " : "",
                 s.p2() ? s.p2()->mesh().num_triangles() : ref.num_triangles(), ref.num_vertices(),
-                s.p2() ? "nodes" : "vertices", magnitude.maxCoeff());
+                s.p2() ? "nodes" : "vertices", max_u);
   fig.note(line);
   if (cs.active_nodes > 0)
     std::snprintf(line, sizeof line,
@@ -127,15 +127,11 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   else
     std::snprintf(line, sizeof line, "no contact");
   fig.note(line);
-  for (const auto& outline : obstacle_outlines(c, box)) {
-    if (outline.size() < 3) continue;
-    fig.filled_polygon(outline, {0.82, 0.82, 0.82});
-    fig.polyline(outline, kDark, 1.2, true);
-  }
-  fig.shade(def, magnitude, 0.0, magnitude.maxCoeff());
-  for (const auto& loop : boundary_loops(ref)) fig.polyline(loop, kGrey, 1.2, true, true);
-  for (const auto& loop : boundary_loops(def)) fig.polyline(loop, kDark, 1.0, true);
-  // Γ_C on the reference outline, and the active part on the deformed one.
+}
+
+// Γ_C on the reference outline, and the active part on the deformed one.
+void draw_contact_zone(Figure& fig, const StructureSetup& s, const ContactSolution& solution, const Mesh& def) {
+  const Mesh& ref = s.mesh();
   const std::vector<BoundaryEdge> gamma_c = ref.edges_on(ref.label("Gamma_C"));
   for (const auto& e : gamma_c) fig.polyline({ref.vertices[e.v[0]], ref.vertices[e.v[1]]}, kOrange, 3.0);
   const std::vector<int> active = active_vertices(*s.solver, solution);
@@ -145,6 +141,30 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
     if (a0 && a1) fig.polyline({def.vertices[e.v[0]], def.vertices[e.v[1]]}, kRed, 4.0);
   }
   for (int v : active) fig.marker(def.vertices[v], kRed, 4.5);
+}
+
+}  // namespace
+
+void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
+                         const ContactSolution& solution) {
+  const Mesh& ref = s.mesh();
+  const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
+  const Mesh def = displaced(ref, u1, u2);
+  const Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
+  const WorldBox box = structure_frame(c, ref, def);
+  const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
+  const bool several = c.obstacles_given && c.obstacles.size() != 1;
+  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle" + (several ? "s" : ""));
+  structure_notes(fig, c, s, solution, magnitude.maxCoeff());
+  for (const auto& outline : obstacle_outlines(c, box)) {
+    if (outline.size() < 3) continue;
+    fig.filled_polygon(outline, {0.82, 0.82, 0.82});
+    fig.polyline(outline, kDark, 1.2, true);
+  }
+  fig.shade(def, magnitude, 0.0, magnitude.maxCoeff());
+  for (const auto& loop : boundary_loops(ref)) fig.polyline(loop, kGrey, 1.2, true, true);
+  for (const auto& loop : boundary_loops(def)) fig.polyline(loop, kDark, 1.0, true);
+  draw_contact_zone(fig, s, solution, def);
   fig.axes("x (m)", "y (m)");
   fig.colour_bar(0.0, magnitude.maxCoeff(), "|u| (m)");
   fig.legend({{kGrey, "undeformed (dashed)"},

@@ -5,6 +5,7 @@
 #include "common/errors.hpp"
 #include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/case_contact.hpp"
 #include "run/mesh_checks.hpp"
 #include "solid/p2_elasticity.hpp"
 #include "qp/active_set_solver.hpp"
@@ -79,7 +80,7 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   }
   const int gamma_c = mesh.label("Gamma_C");
   const std::vector<int> fixed = clamped_dofs(mesh, mesh.label("Gamma_D"));
-  s.gap = std::make_shared<ContactGap>(c, mesh);
+  s.gap = std::make_shared<ContactGap>(case_contact_gap(c, mesh));
   try {
     if (s.gap->normal()) {  // its first constraint: linearised at rest (no ψ: the obstacles need not be the paper's disk)
       ContactConstraint at_rest = s.gap->at_rest(mesh);  // before `mesh` is moved from

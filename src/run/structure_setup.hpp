@@ -9,7 +9,7 @@
 
 #include "io/case.hpp"
 #include "qp/qp_problem.hpp"
-#include "run/contact_gap.hpp"
+#include "solid/contact_gap.hpp"
 #include "solid/contact_solver.hpp"
 #include "solid/obstacle.hpp"
 

@@ -50,7 +50,7 @@ class DiskObstacle final : public Obstacle {
 // active-set solver): 3 passes for margins from 1e-6 to 1.7e-9 · diam, 17 at 1e-9 ·
 // diam, none settling in 50 at 1e-11 · diam; max |u| moves by 2e-5 relative between
 // 1e-6 and 1e-8 · diam, far below the discretisation's (5 % between h = 1 and 0.5 mm on
-// the wedge). The runs use kPolygonMargin (run/contact_gap.hpp).
+// the wedge). The runs use kPolygonMargin (solid/contact_gap.hpp).
 class PolygonObstacle final : public Obstacle {
  public:
   PolygonObstacle(std::vector<Point> points, double margin);

@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
+#include "coupling/penalised_step.hpp"
 #include "io/case.hpp"
 #include "qp/active_set_solver.hpp"
 #include "run/fluid_setup.hpp"
@@ -101,11 +102,12 @@ Coupled solve(std::vector<std::string> sets, Relaxation* custom = nullptr,
   Coupled out;
   out.M = assemble_vector_mass(s.mesh());
   auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, out.M);
-  FixedPointCoupling loop({*s.solver, s.b_applied, *f.stokes, *f.locator, *f.chi, force},
-                          custom ? *custom : *relaxation, c.coupling.tol, c.coupling.max_iterations);
+  PenalisedStep fluid({s.mesh(), *f.stokes, *f.locator, *f.chi, force});
+  StructureStep structure(*s.solver, s.gap.get());
+  FixedPointCoupling loop(fluid, structure, s.b_applied, custom ? *custom : *relaxation, out.M, c.coupling.tol,
+                          c.coupling.max_iterations);
   loop.inexact_fraction = inexact;
-  if (s.gap->normal()) loop.relinearise = [&s](const Eigen::VectorXd& u) { s.gap->relinearise(*s.solver, u); };
-  expect_structure_under_loads(s, f);  // as run_fsi_case: solve 1 is this guess
+  expect_structure_under_loads(s, f);  // as the penalised run: solve 1 is this guess
   out.result = loop.run();
   const Eigen::VectorXd& u = out.result.structure.u;
   const int nv = s.mesh().num_vertices();

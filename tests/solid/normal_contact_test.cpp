@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "io/case.hpp"
-#include "run/contact_gap.hpp"
+#include "solid/contact_gap.hpp"
 #include "run/structure_setup.hpp"
 #include "solid/normal_contact.hpp"
 #include "solid/relinearised_contact.hpp"

@@ -1,13 +1,14 @@
-// contact.gap for a run (SPEC §9): the paper's eq. (15), or the signed distance
-// re-linearised about the current state (solid/relinearised_contact.hpp), with the
-// obstacles ([obstacle]'s disk, or [[obstacles]]) and the candidate vertices the case
-// asks for; and the exact gap that summary.json reports for either rule.
+// The structure's gap to its obstacles (SPEC §9): the paper's eq. (15), or the signed
+// distance re-linearised about the current state (solid/relinearised_contact.hpp), with
+// the obstacles and the candidate vertices; and the exact gap that summary.json
+// reports for either rule. The run builds it from the case (run/structure_setup.hpp
+// case_contact_gap).
 #pragma once
 
 #include <memory>
 #include <vector>
 
-#include "io/case.hpp"
+#include <string>
 #include "solid/contact_solver.hpp"
 #include "solid/relinearised_contact.hpp"
 #include "solid/signed_distance.hpp"
@@ -23,8 +24,12 @@ inline constexpr double kPolygonMargin = 1e-7;
 
 class ContactGap {
  public:
-  // `mesh`: the structure's reference mesh (labels Gamma_C, Gamma_D).
-  ContactGap(const Case& c, const Mesh& mesh);
+  // `mesh`: the structure's reference mesh (labels Gamma_C, Gamma_D). `normal`: the
+  // signed distance re-linearised (contact.gap = "normal"), its candidates on
+  // `boundary` (contact.boundary); else eq. (15) on Γ_C's interior vertices. No
+  // obstacle: nothing to touch and no row.
+  ContactGap(std::vector<std::unique_ptr<Obstacle>> obstacles, bool normal, const Mesh& mesh,
+             const std::string& boundary);
 
   bool normal() const { return normal_; }
   // "normal": the constraint linearised at rest (the structure's first constraint).

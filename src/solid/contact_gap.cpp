@@ -1,30 +1,17 @@
-#include "run/contact_gap.hpp"
+#include "solid/contact_gap.hpp"
 
 #include <algorithm>
 
 namespace fsi {
-namespace {
 
-std::unique_ptr<Obstacle> make_obstacle(const ObstacleSpec& o, double diam) {
-  if (o.shape == "disk") return std::make_unique<DiskObstacle>(Point(o.x0, o.y0), o.r);
-  if (o.shape == "polygon") return std::make_unique<PolygonObstacle>(o.points, kPolygonMargin * diam);
-  return std::make_unique<HalfPlaneObstacle>(o.point, o.normal);
-}
-
-}  // namespace
-
-ContactGap::ContactGap(const Case& c, const Mesh& mesh) : normal_(c.contact.gap == "normal") {
-  if (c.obstacles_given) {
-    for (const ObstacleSpec& o : c.obstacles) owned_.push_back(make_obstacle(o, diameter(mesh)));
-  } else {
-    owned_.push_back(std::make_unique<DiskObstacle>(Point(c.obstacle.x0, c.obstacle.y0), c.obstacle.r));
-  }
+ContactGap::ContactGap(std::vector<std::unique_ptr<Obstacle>> obstacles, bool normal, const Mesh& mesh,
+                       const std::string& boundary)
+    : normal_(normal), owned_(std::move(obstacles)) {
   for (const auto& p : owned_) obstacles_.push_back(p.get());
   // "paper" checks the exact gap on its own rows (Γ_C's interior vertices); with no
   // obstacle (obstacles = []) there is nothing to touch and no row.
   if (obstacles_.empty()) return;
-  candidates_ = candidate_vertices(mesh, normal_ ? c.contact.boundary : "Gamma_C", mesh.label("Gamma_C"),
-                                   mesh.label("Gamma_D"));
+  candidates_ = candidate_vertices(mesh, normal_ ? boundary : "Gamma_C", mesh.label("Gamma_C"), mesh.label("Gamma_D"));
 }
 
 ContactConstraint ContactGap::at_rest(const Mesh& mesh) const {

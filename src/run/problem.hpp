@@ -1,0 +1,54 @@
+// One kind of run (SPEC §2, §3, §5, §9): the steps that run() (run/run_case.hpp) takes in
+// turn, the shape of a deal.II tutorial's run(). Each kind is a type, chosen once from
+// the case by make_problem; run() owns what every kind shares: the output directory,
+// the timing of each phase, failures and interruption.
+//
+//   make_problem(case) ─► set_up ─► solve ─► measure ─► summarise ─► write
+//                          (mesh,     (the      (RunMeasures,  (summary.json's  (the files
+//                          structure, coupled   exit status)   keys, report)    beside
+//                          fluid)     loop)                                     summary.json)
+//
+// A time-dependent kind (SPEC §12) will be one more type whose solve is the loop over
+// time windows (each window the coupling's fixed point) and whose write adds the
+// time series; run() stays as it is.
+#pragma once
+
+#include <memory>
+
+#include "common/timer.hpp"
+#include "io/case.hpp"
+
+namespace fsi {
+
+struct RunOptions;
+struct RunResult;
+class RunOutputs;
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+  // summary.json's "problem": "contact", "fluid" or "fsi".
+  virtual const char* kind() const = 0;
+  // The meshes and what the solvers build once, each timed as its phase ("mesh",
+  // "structure", "fluid"). InputError (exit 2) before anything is written;
+  // SolverFailure if validated input cannot be set up.
+  virtual void set_up(PhaseTimes& times) = 0;
+  // The solve, its phases timed. A failure with a last good state to write is kept
+  // for measure(); one without (a set-up or contact-only failure) throws SolverFailure.
+  virtual void solve(PhaseTimes& times) = 0;
+  // r.measures, r.displacement, r.exit_status and r.failure, from the final state.
+  virtual void measure(RunResult& r) = 0;
+  // r.summary (summary.json's keys, SPEC §8–§11, but "timing_s") and r.report.
+  virtual void summarise(RunResult& r) = 0;
+  // The files beside summary.json (fields, pictures, history.csv, case.toml); a failed
+  // write is recorded by `out`, not thrown.
+  virtual void write(RunOutputs& out) = 0;
+};
+
+// The kind of run the case asks for: contact alone (no [fluid]), the fluid alone
+// (structure.shape = "none"), or the fluid around the structure at rest
+// (coupling.max_iterations = 0) or coupled to it (SPEC §5), by fluid.method. Builds
+// nothing yet.
+std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options);
+
+}  // namespace fsi

@@ -1,0 +1,23 @@
+// The kinds of run (run/problem.hpp), each defined in its own file; make_problem
+// (run/problem.cpp) picks one.
+#pragma once
+
+#include <memory>
+
+#include "run/problem.hpp"
+
+namespace fsi {
+
+// SPEC §2: no [fluid] (run/contact_problem.cpp).
+std::unique_ptr<Problem> contact_problem(const Case& c, const RunOptions& options);
+// structure.shape = "none": the fluid alone, no structure (run/fluid_problem.cpp).
+std::unique_ptr<Problem> fluid_problem(const Case& c, const RunOptions& options);
+// fluid.method = "penalised" (run/penalised_problem.cpp): coupled (SPEC §5), or with
+// coupling.max_iterations = 0 the fluid alone around the structure at rest (SPEC §3).
+std::unique_ptr<Problem> penalised_fsi(const Case& c, const RunOptions& options);
+std::unique_ptr<Problem> penalised_fluid_at_rest(const Case& c, const RunOptions& options);
+// fluid.method = "body-fitted" (run/body_fitted_problem.cpp): the same two kinds.
+std::unique_ptr<Problem> body_fitted_fsi(const Case& c, const RunOptions& options);
+std::unique_ptr<Problem> body_fitted_fluid_at_rest(const Case& c, const RunOptions& options);
+
+}  // namespace fsi
