@@ -75,45 +75,88 @@ int converge_command(const std::string& case_path, const std::vector<std::string
   return r.exit_status;
 }
 
+// The values of the command line, bound to CLI11's options; --set, --out and
+// --quiet are shared by the subcommands.
+struct CliArgs {
+  std::string case_path, out_dir;
+  std::vector<std::string> sets;
+  bool quiet = false;
+  std::string sweep_case, sweep_rows;
+  bool keep_outputs = false;
+  std::string converge_case, schemes, refine = "all";
+  int levels = 3;
+  double ratio = 2;
+};
+
+void add_run_command(CLI::App& app, CliArgs& a) {
+  CLI::App* run = app.add_subcommand("run", "run one case (default: the paper's section 7.2 case)");
+  run->add_option("case", a.case_path, "case file (TOML); omit for the paper's section 7.2 case");
+  run->add_option("--set", a.sets, "override a case key: section.key=value")->type_name("KEY=VALUE");
+  run->add_option("--out", a.out_dir, "output directory (overrides output.dir; taken as it is)");
+  run->add_flag("-q,--quiet", a.quiet, "no progress lines on stderr");
+}
+
+CLI::App* add_sweep_command(CLI::App& app, CliArgs& a) {
+  CLI::App* sweep = app.add_subcommand("sweep", "run one case per row of a CSV file (e.g. the paper's Table 1)");
+  sweep->add_option("case", a.sweep_case, "base case file (TOML)")->required();
+  sweep->add_option("rows", a.sweep_rows, "CSV: headers are section.key overrides; paper.* columns are references")->required();
+  sweep->add_option("--set", a.sets, "override a key in every row: section.key=value")->type_name("KEY=VALUE");
+  sweep->add_option("--out", a.out_dir, "output directory (default out/<name>-sweep)");
+  sweep->add_flag("--keep-outputs", a.keep_outputs, "write each row's .vtu and .png too");
+  sweep->add_flag("-q,--quiet", a.quiet, "no progress lines on stderr");
+  return sweep;
+}
+
+CLI::App* add_converge_command(CLI::App& app, CliArgs& a) {
+  CLI::App* converge = app.add_subcommand(
+      "converge", "run a case on refined levels: observed order, Richardson extrapolation and GCI per quantity");
+  converge->add_option("case", a.converge_case, "case file (TOML)")->required();
+  converge->add_option("--levels", a.levels, "number of levels, the case itself the coarsest (3 to 10; default 3)");
+  converge->add_option("--ratio", a.ratio, "size ratio between consecutive levels (default 2)");
+  converge->add_option("--schemes", a.schemes,
+                       "coupling schemes run at every level, the first gives the values: a list "
+                       "(constant,aitken,iqn-ils) or all (default: the case's own)");
+  converge->add_option("--refine", a.refine,
+                       "which meshes the levels refine: all (default), fluid (fluid.h, fluid.h_near, eps by its rule) "
+                       "or structure (structure.h); the other stays as given");
+  converge->add_option("--set", a.sets, "override a key on every level: section.key=value")->type_name("KEY=VALUE");
+  converge->add_option("--out", a.out_dir, "output directory (default out/<name>-converge)");
+  converge->add_flag("-q,--quiet", a.quiet, "no progress lines on stderr");
+  return converge;
+}
+
+// Runs the parsed subcommand (run when neither sweep nor converge) and maps its
+// errors to exit statuses.
+int run_subcommand(const CliArgs& a, const CLI::App& sweep, const CLI::App& converge, Streams io) {
+  try {
+    if (sweep.parsed()) return sweep_command(a.sweep_case, a.sweep_rows, a.sets, a.out_dir, a.keep_outputs, a.quiet, io);
+    if (converge.parsed())
+      return converge_command(a.converge_case, a.sets, a.out_dir, a.levels, a.ratio, a.schemes, a.refine, a.quiet, io);
+    return run_command(a.case_path, a.sets, a.out_dir, a.quiet, io);
+  } catch (const InputError& e) {
+    io.err << "fsicontact: error: " << e.what() << std::endl;
+    return 2;
+  } catch (const SolverFailure& e) {
+    io.err << "fsicontact: failed: " << e.what() << std::endl;
+    return 1;
+  } catch (const OutputError& e) {
+    io.err << "fsicontact: failed: " << e.what() << std::endl;
+    return 1;
+  } catch (const std::bad_alloc&) {
+    io.err << "fsicontact: failed: out of memory" << std::endl;
+    return 1;
+  }
+}
+
 }  // namespace
 
 int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{"fsicontact: fluid-structure interaction with contact against a rigid obstacle (Murea 2017)"};
   app.require_subcommand(0, 1);
-  std::string case_path, out_dir;
-  std::vector<std::string> sets;
-  bool quiet = false;
-  CLI::App* run = app.add_subcommand("run", "run one case (default: the paper's section 7.2 case)");
-  run->add_option("case", case_path, "case file (TOML); omit for the paper's section 7.2 case");
-  run->add_option("--set", sets, "override a case key: section.key=value")->type_name("KEY=VALUE");
-  run->add_option("--out", out_dir, "output directory (overrides output.dir; taken as it is)");
-  run->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
-  std::string sweep_case, sweep_rows;
-  bool keep_outputs = false;
-  CLI::App* sweep = app.add_subcommand("sweep", "run one case per row of a CSV file (e.g. the paper's Table 1)");
-  sweep->add_option("case", sweep_case, "base case file (TOML)")->required();
-  sweep->add_option("rows", sweep_rows, "CSV: headers are section.key overrides; paper.* columns are references")->required();
-  sweep->add_option("--set", sets, "override a key in every row: section.key=value")->type_name("KEY=VALUE");
-  sweep->add_option("--out", out_dir, "output directory (default out/<name>-sweep)");
-  sweep->add_flag("--keep-outputs", keep_outputs, "write each row's .vtu and .png too");
-  sweep->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
-  std::string converge_case, schemes, refine = "all";
-  int levels = 3;
-  double ratio = 2;
-  CLI::App* converge = app.add_subcommand(
-      "converge", "run a case on refined levels: observed order, Richardson extrapolation and GCI per quantity");
-  converge->add_option("case", converge_case, "case file (TOML)")->required();
-  converge->add_option("--levels", levels, "number of levels, the case itself the coarsest (3 to 10; default 3)");
-  converge->add_option("--ratio", ratio, "size ratio between consecutive levels (default 2)");
-  converge->add_option("--schemes", schemes,
-                       "coupling schemes run at every level, the first gives the values: a list "
-                       "(constant,aitken,iqn-ils) or all (default: the case's own)");
-  converge->add_option("--refine", refine,
-                       "which meshes the levels refine: all (default), fluid (fluid.h, fluid.h_near, eps by its rule) "
-                       "or structure (structure.h); the other stays as given");
-  converge->add_option("--set", sets, "override a key on every level: section.key=value")->type_name("KEY=VALUE");
-  converge->add_option("--out", out_dir, "output directory (default out/<name>-converge)");
-  converge->add_flag("-q,--quiet", quiet, "no progress lines on stderr");
+  CliArgs args;
+  add_run_command(app, args);
+  CLI::App* sweep = add_sweep_command(app, args);
+  CLI::App* converge = add_converge_command(app, args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -124,24 +167,7 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
     return 2;
   }
   install_interrupt_handler();
-  const Streams io{out, err};
-  try {
-    if (sweep->parsed()) return sweep_command(sweep_case, sweep_rows, sets, out_dir, keep_outputs, quiet, io);
-    if (converge->parsed()) return converge_command(converge_case, sets, out_dir, levels, ratio, schemes, refine, quiet, io);
-    return run_command(case_path, sets, out_dir, quiet, io);
-  } catch (const InputError& e) {
-    err << "fsicontact: error: " << e.what() << std::endl;
-    return 2;
-  } catch (const SolverFailure& e) {
-    err << "fsicontact: failed: " << e.what() << std::endl;
-    return 1;
-  } catch (const OutputError& e) {
-    err << "fsicontact: failed: " << e.what() << std::endl;
-    return 1;
-  } catch (const std::bad_alloc&) {
-    err << "fsicontact: failed: out of memory" << std::endl;
-    return 1;
-  }
+  return run_subcommand(args, *sweep, *converge, Streams{out, err});
 }
 
 }  // namespace fsi

@@ -85,6 +85,48 @@ void release_free_heap() {
 #endif
 }
 
+// The unknowns by the regions whose triangles hold them: far only (F), both (Γ),
+// near only (I).
+struct UnknownRegions {
+  std::vector<int> F, I, G;
+};
+
+UnknownRegions classify_unknowns(int n, const std::vector<char>& near, const ElementDofs& dofs) {
+  const int nt = static_cast<int>(near.size());
+  std::vector<char> in_far(n, 0), in_near(n, 0);
+  for (int t = 0; t < nt; ++t)
+    for (int d : dofs(t))
+      if (d >= 0) (near[t] ? in_near : in_far)[d] = 1;
+  UnknownRegions r;
+  for (int d = 0; d < n; ++d) {
+    if (in_far[d] && in_near[d]) r.G.push_back(d);
+    else if (in_far[d]) r.F.push_back(d);
+    else if (in_near[d]) r.I.push_back(d);
+  }
+  return r;
+}
+
+// The far unknowns (local indices into `far_dofs`) by their rank in the given order.
+std::vector<int> far_order_by_rank(const std::vector<int>& far_dofs, const std::vector<int>& rank) {
+  std::vector<int> order(far_dofs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return rank[far_dofs[a]] < rank[far_dofs[b]]; });
+  return order;
+}
+
+// M's Γ block is dense: Γ must be eliminated last (as the root of the elimination
+// tree), or every Γ pivot fills I's rows. I in the given order, then Γ (the first
+// ng near unknowns).
+std::vector<int> near_order_by_rank(const std::vector<int>& near_dofs, const std::vector<int>& rank, int ng) {
+  std::vector<int> order(near_dofs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    if ((a < ng) != (b < ng)) return b < ng;  // I before Γ
+    return rank[near_dofs[a]] < rank[near_dofs[b]];
+  });
+  return order;
+}
+
 }  // namespace
 
 RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const ElementDofs& dofs,
@@ -92,33 +134,47 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
                                      const DofRank& dof_rank, const std::string& near_solver,
                                      double far_factor_budget_mb)
     : near_(near), near_solver_name_(near_solver), n_(n) {
+  const std::vector<int> far_triangles = split_triangles(near);
+  split_unknowns(near, dofs);
+  assemble_far_field(far_triangles, dofs, element, load);
+  // The order only now: the far field's pattern and elements (~15 ms at hF = 0.01)
+  // overlap the METIS run computing it on the second core.
+  static const std::vector<int> no_rank;
+  const std::vector<int>& rank = dof_rank ? dof_rank() : no_rank;
+  if (!rank.empty()) far_order_ = far_order_by_rank(far_dofs_, rank);
+  factorize_far_field(far_factor_budget_mb);
+
+  set_up_near_system(dofs, load);
+  if (!rank.empty() && near_solver.rfind("mumps", 0) == 0)
+    near_order_ = near_order_by_rank(near_dofs_, rank, static_cast<int>(gamma_.size()));
+  near_solver_ = make_near_solver();
+  near_solver_->analyze(M_);
+}
+
+std::vector<int> RegionSchurSolver::split_triangles(const std::vector<char>& near) {
   const int nt = static_cast<int>(near.size());
   std::vector<int> far_triangles;
   for (int t = 0; t < nt; ++t) (near[t] ? near_triangles_ : far_triangles).push_back(t);
   if (near_triangles_.empty() || far_triangles.empty())
     throw std::invalid_argument("RegionSchurSolver: the near region must be neither empty nor everything");
+  return far_triangles;
+}
 
-  // Classify the unknowns: far only (F), both (Γ), near only (I).
-  std::vector<char> in_far(n, 0), in_near(n, 0);
-  for (int t = 0; t < nt; ++t)
-    for (int d : dofs(t))
-      if (d >= 0) (near[t] ? in_near : in_far)[d] = 1;
-  std::vector<int> F, I, G;
-  for (int d = 0; d < n; ++d) {
-    if (in_far[d] && in_near[d]) G.push_back(d);
-    else if (in_far[d]) F.push_back(d);
-    else if (in_near[d]) I.push_back(d);
-  }
-  if (G.empty()) throw std::invalid_argument("RegionSchurSolver: the near region does not touch the far field");
-  const int nf = static_cast<int>(F.size()), ng = static_cast<int>(G.size());
-  far_dofs_ = F;
-  far_dofs_.insert(far_dofs_.end(), G.begin(), G.end());
-  near_dofs_ = G;
-  near_dofs_.insert(near_dofs_.end(), I.begin(), I.end());
+void RegionSchurSolver::split_unknowns(const std::vector<char>& near, const ElementDofs& dofs) {
+  const UnknownRegions r = classify_unknowns(n_, near, dofs);
+  if (r.G.empty()) throw std::invalid_argument("RegionSchurSolver: the near region does not touch the far field");
+  const int nf = static_cast<int>(r.F.size()), ng = static_cast<int>(r.G.size());
+  far_dofs_ = r.F;
+  far_dofs_.insert(far_dofs_.end(), r.G.begin(), r.G.end());
+  near_dofs_ = r.G;
+  near_dofs_.insert(near_dofs_.end(), r.I.begin(), r.I.end());
   gamma_.resize(ng);
   for (int k = 0; k < ng; ++k) gamma_[k] = nf + k;
+}
 
-  std::vector<int> local(n, -1);
+void RegionSchurSolver::assemble_far_field(const std::vector<int>& far_triangles, const ElementDofs& dofs,
+                                           const ElementFunction& element, const Eigen::VectorXd& load) {
+  std::vector<int> local(n_, -1);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) local[far_dofs_[k]] = static_cast<int>(k);
   // Only the lower triangle: MUMPS reads it in place, and the residual check
   // multiplies by its symmetric view (half the memory of the largest matrix).
@@ -126,16 +182,9 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
   b_far_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(far_dofs_.size()));
   for (int t : far_triangles) add_element(K_far_, b_far_, element(t), local, /*lower=*/true);
   for (std::size_t k = 0; k < far_dofs_.size(); ++k) b_far_[static_cast<Eigen::Index>(k)] += load[far_dofs_[k]];
-  // The order only now: the far field's pattern and elements (~15 ms at hF = 0.01)
-  // overlap the METIS run computing it on the second core.
-  static const std::vector<int> no_rank;
-  const std::vector<int>& rank = dof_rank ? dof_rank() : no_rank;
-  if (!rank.empty()) {  // the far unknowns by their rank in the given order
-    far_order_.resize(far_dofs_.size());
-    for (std::size_t k = 0; k < far_order_.size(); ++k) far_order_[k] = static_cast<int>(k);
-    std::sort(far_order_.begin(), far_order_.end(),
-              [&](int a, int b) { return rank[far_dofs_[a]] < rank[far_dofs_[b]]; });
-  }
+}
+
+void RegionSchurSolver::factorize_far_field(double far_factor_budget_mb) {
   release_free_heap();
   far_.factorize(K_far_, gamma_, far_order_);
   y_gamma_ = far_.condense(b_far_);
@@ -144,25 +193,16 @@ RegionSchurSolver::RegionSchurSolver(int n, const std::vector<char>& near, const
     far_.release();
     release_free_heap();
   }
+}
 
-  near_local_.assign(n, -1);
+void RegionSchurSolver::set_up_near_system(const ElementDofs& dofs, const Eigen::VectorXd& load) {
+  const int ng = static_cast<int>(gamma_.size());
+  near_local_.assign(n_, -1);
   for (std::size_t k = 0; k < near_dofs_.size(); ++k) near_local_[near_dofs_[k]] = static_cast<int>(k);
   M_ = element_pattern(static_cast<int>(near_dofs_.size()), near_triangles_, near_local_, dofs, ng);
   load_near_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(near_dofs_.size()));
   for (std::size_t k = ng; k < near_dofs_.size(); ++k)  // Γ's load went to the far field
     load_near_[static_cast<Eigen::Index>(k)] = load[near_dofs_[k]];
-  // M's Γ block is dense: Γ must be eliminated last (as the root of the elimination
-  // tree), or every Γ pivot fills I's rows. I in the given order, then Γ.
-  if (!rank.empty() && near_solver.rfind("mumps", 0) == 0) {
-    near_order_.resize(near_dofs_.size());
-    for (std::size_t k = 0; k < near_order_.size(); ++k) near_order_[k] = static_cast<int>(k);
-    std::sort(near_order_.begin(), near_order_.end(), [&](int a, int b) {
-      if ((a < ng) != (b < ng)) return b < ng;  // I before Γ
-      return rank[near_dofs_[a]] < rank[near_dofs_[b]];
-    });
-  }
-  near_solver_ = make_near_solver();
-  near_solver_->analyze(M_);
 }
 
 std::unique_ptr<SparseDirectSolver> RegionSchurSolver::make_near_solver() const {

@@ -87,6 +87,18 @@ class RegionSchurSolver {
   double far_factor_mb() const { return far_.factor_memory_mb(); }
 
  private:
+  // The constructor's steps, in this order.
+  // Fills near_triangles_ and returns the far ones; throws if either is empty.
+  std::vector<int> split_triangles(const std::vector<char>& near);
+  // Fills far_dofs_, near_dofs_ and gamma_; throws if Γ is empty.
+  void split_unknowns(const std::vector<char>& near, const ElementDofs& dofs);
+  // K_far_ (lower triangle) and b_far_, the load included.
+  void assemble_far_field(const std::vector<int>& far_triangles, const ElementDofs& dofs,
+                          const ElementFunction& element, const Eigen::VectorXd& load);
+  // S and y_Γ; the far factors released if over the budget.
+  void factorize_far_field(double far_factor_budget_mb);
+  // near_local_, M_'s pattern and load_near_.
+  void set_up_near_system(const ElementDofs& dofs, const Eigen::VectorXd& load);
   std::unique_ptr<SparseDirectSolver> make_near_solver() const;
 
   std::vector<char> near_;

@@ -15,6 +15,18 @@ std::vector<int> indices_of(const std::vector<bool>& mask) {
   return idx;
 }
 
+// The start: the warm result's active set if it has one of the right size, else the
+// rows violated at α = 0 (slack d < 0).
+std::vector<bool> initial_active_set(const Eigen::VectorXd& d, const QpResult* warm) {
+  const Eigen::Index m = d.size();
+  std::vector<bool> active(m, false);
+  if (warm && warm->active.size() == static_cast<std::size_t>(m))
+    active = warm->active;
+  else
+    for (Eigen::Index i = 0; i < m; ++i) active[i] = d[i] < 0;
+  return active;
+}
+
 }  // namespace
 
 void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C) {
@@ -134,25 +146,12 @@ Eigen::VectorXd ActiveSetSolver::lawson_hanson(const Eigen::VectorXd& d, int& it
   return alpha;
 }
 
-QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
-                                const QpResult* warm) {
-  if (!factorised()) throw QpError("active-set: solve before set_operator");
-  if (b.size() != A_.rows() || c.size() != C_.rows())
-    throw QpError("active-set: load or bound has the wrong size");
-  require_finite(b, "active-set", "the load b_S");
-  require_finite(c, "active-set", "the bound c_lb");
-  used_fallback_ = false;
+// PDAS from result.active (the set update of the header: A = {α_i − κ_i w_i > 0}),
+// alpha the multipliers of the last set solved. True when the set no longer changes;
+// false when it cycles or max_iterations is reached.
+bool ActiveSetSolver::primal_dual_active_set(const Eigen::VectorXd& d, QpResult& result,
+                                             Eigen::VectorXd& alpha) const {
   const Eigen::Index m = C_.rows();
-  const Eigen::VectorXd d = C_ * solve_A<Eigen::VectorXd>(b) - c;  // slack at α = 0
-
-  QpResult result;
-  result.active.assign(m, false);
-  if (warm && warm->active.size() == static_cast<std::size_t>(m))
-    result.active = warm->active;
-  else
-    for (Eigen::Index i = 0; i < m; ++i) result.active[i] = d[i] < 0;
-
-  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(m);
   bool converged = m == 0;
   std::set<std::vector<bool>> visited{result.active};
   while (!converged && result.iterations < max_iterations) {
@@ -180,13 +179,36 @@ QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd&
       result.active = next;
     }
   }
-  if (!converged) {
-    used_fallback_ = true;
-    alpha = lawson_hanson(d, result.iterations);
-    const Eigen::VectorXd w = d + S_ * alpha;
-    for (Eigen::Index i = 0; i < m; ++i) result.active[i] = alpha[i] > 0 || w[i] <= 0;
-    if (progress) progress("active-set: cycling detected, finished by Lawson-Hanson");
-  }
+  return converged;
+}
+
+// The multipliers by Lawson–Hanson when PDAS did not converge; result.active: the
+// rows active or degenerate (w ≤ 0) at them.
+Eigen::VectorXd ActiveSetSolver::lawson_hanson_fallback(const Eigen::VectorXd& d, QpResult& result) {
+  const Eigen::Index m = C_.rows();
+  used_fallback_ = true;
+  const Eigen::VectorXd alpha = lawson_hanson(d, result.iterations);
+  const Eigen::VectorXd w = d + S_ * alpha;
+  for (Eigen::Index i = 0; i < m; ++i) result.active[i] = alpha[i] > 0 || w[i] <= 0;
+  if (progress) progress("active-set: cycling detected, finished by Lawson-Hanson");
+  return alpha;
+}
+
+QpResult ActiveSetSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& c,
+                                const QpResult* warm) {
+  if (!factorised()) throw QpError("active-set: solve before set_operator");
+  if (b.size() != A_.rows() || c.size() != C_.rows())
+    throw QpError("active-set: load or bound has the wrong size");
+  require_finite(b, "active-set", "the load b_S");
+  require_finite(c, "active-set", "the bound c_lb");
+  used_fallback_ = false;
+  const Eigen::Index m = C_.rows();
+  const Eigen::VectorXd d = C_ * solve_A<Eigen::VectorXd>(b) - c;  // slack at α = 0
+
+  QpResult result;
+  result.active = initial_active_set(d, warm);
+  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(m);
+  if (!primal_dual_active_set(d, result, alpha)) alpha = lawson_hanson_fallback(d, result);
   result.alpha = alpha.cwiseMax(0.0);
   result.x = solve_A<Eigen::VectorXd>(b + C_.transpose() * result.alpha);
   result.kkt = solver_kkt_residuals(A_, b, C_, c, result.x, alpha);

@@ -38,6 +38,8 @@ class ActiveSetSolver final : public QpSolver {
  private:
   Eigen::VectorXd solve_active(const std::vector<bool>& active, const Eigen::VectorXd& d) const;
   Eigen::VectorXd lawson_hanson(const Eigen::VectorXd& d, int& iterations) const;
+  bool primal_dual_active_set(const Eigen::VectorXd& d, QpResult& result, Eigen::VectorXd& alpha) const;
+  Eigen::VectorXd lawson_hanson_fallback(const Eigen::VectorXd& d, QpResult& result);
   void compute_schur_by_solves();
 
   SparseMatrix A_, C_;

@@ -93,6 +93,17 @@ class ElasticContactSolver {
   ContactSolution solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm);
   void require_unfolded(const Eigen::VectorXd& u) const;
   bool newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report);
+  // A Newton step taken: the displacement, its internal force and equilibrium
+  // residual, and how many times it was halved.
+  struct DampedStep {
+    Eigen::VectorXd u, f;
+    double residual;
+    int cuts;
+  };
+  bool solve_step_qp(const Eigen::VectorXd& b, const Eigen::VectorXd& f, const Eigen::VectorXd& x_k,
+                     const QpResult* warm, QpResult& qp);
+  DampedStep damped_step(const Eigen::VectorXd& u, const Eigen::VectorXd& x_k, const QpResult& qp,
+                         const Eigen::VectorXd& b, double K_norm, double r_prev);
   double equilibrium_residual(const Eigen::VectorXd& f, const Eigen::VectorXd& b, const Eigen::VectorXd& alpha,
                               const Eigen::VectorXd& x, double K_norm) const;
 

@@ -75,6 +75,45 @@ double infinity_norm(const SparseMatrix& K) {  // max row sum of |K| (K symmetri
 }
 }  // namespace
 
+// The QP of the step at x_k (the increment's, shifted back to x: qp.x the new x), from
+// `warm` if given; false (the QP's words in last_newton_failure_) if it fails.
+bool ElasticContactSolver::solve_step_qp(const Eigen::VectorXd& b, const Eigen::VectorXd& f,
+                                         const Eigen::VectorXd& x_k, const QpResult* warm, QpResult& qp) {
+  try {
+    solver_.set_operator(K_, C_free_);
+    // In the increment δ = x − x_k: the QP's load is the residual itself. In the total
+    // displacement (load K x_k − r) a thin structure's large K x_k left the residual
+    // at 1e-7 (Turek–Hron's flag: digits lost to that cancellation).
+    const Eigen::VectorXd c_delta = contact_.c_lb - C_free_ * x_k;
+    qp = solver_.solve(b - f, c_delta, warm);
+    qp.x += x_k;
+  } catch (const QpError& e) {  // e.g. a tangent that is not positive definite: smaller load steps
+    last_newton_failure_ = e.what();
+    return false;
+  }
+  return true;
+}
+
+// The step from u (free dofs x_k) to the QP's qp.x, halved while it folds a triangle
+// or does not reduce the residual below r_prev; the kMaxCuts-th halving is taken as
+// it is (its residual infinite if it still folds one).
+ElasticContactSolver::DampedStep ElasticContactSolver::damped_step(const Eigen::VectorXd& u, const Eigen::VectorXd& x_k,
+                                                                   const QpResult& qp, const Eigen::VectorXd& b,
+                                                                   double K_norm, double r_prev) {
+  DampedStep step{u, Eigen::VectorXd(), INFINITY, 0};
+  for (double s = 1;; s *= 0.5, ++step.cuts) {
+    step.u(free_dofs_) = x_k + s * (qp.x - x_k);
+    try {
+      step.f = assembler_->force(material_, step.u);
+      step.residual = equilibrium_residual(step.f, b, qp.alpha, step.u(free_dofs_), K_norm);
+    } catch (const SolverFailure&) {  // a folded triangle: shorter
+      step.residual = INFINITY;
+    }
+    if ((std::isfinite(step.residual) && step.residual < r_prev) || step.cuts == kMaxCuts) break;
+  }
+  return step;
+}
+
 // Newton from `state` for the load b_S; true (state: the solution) if converged.
 bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report) {
   report.history.clear();
@@ -93,47 +132,22 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
     const double K_norm = infinity_norm(K_);
     const Eigen::VectorXd x_k = u(free_dofs_);
     QpResult qp;
-    try {
-      solver_.set_operator(K_, C_free_);
-      // In the increment δ = x − x_k: the QP's load is the residual itself. In the total
-      // displacement (load K x_k − r) a thin structure's large K x_k left the residual
-      // at 1e-7 (Turek–Hron's flag: digits lost to that cancellation).
-      const Eigen::VectorXd c_delta = contact_.c_lb - C_free_ * x_k;
-      qp = solver_.solve(b - f, c_delta, warm_fits || step > 0 ? &state.qp : nullptr);
-      qp.x += x_k;
-    } catch (const QpError& e) {  // e.g. a tangent that is not positive definite: smaller load steps
-      last_newton_failure_ = e.what();
-      return false;
-    }
+    if (!solve_step_qp(b, f, x_k, warm_fits || step > 0 ? &state.qp : nullptr, qp)) return false;
     ++report.steps;
-    // The step, halved while it folds a triangle or does not reduce the residual; the
-    // kMaxCuts-th halving is taken as it is.
-    double r_new = INFINITY;
-    Eigen::VectorXd u_new = u, f_new;
-    int cut = 0;
-    for (double s = 1;; s *= 0.5, ++cut) {
-      u_new(free_dofs_) = x_k + s * (qp.x - x_k);
-      try {
-        f_new = assembler_->force(material_, u_new);
-        r_new = equilibrium_residual(f_new, b, qp.alpha, u_new(free_dofs_), K_norm);
-      } catch (const SolverFailure&) {  // a folded triangle: shorter
-        r_new = INFINITY;
-      }
-      if ((std::isfinite(r_new) && r_new < r_prev) || cut == kMaxCuts) break;
-    }
-    report.cuts += cut;
-    if (!std::isfinite(r_new)) return false;
+    const DampedStep damped = damped_step(u, x_k, qp, b, K_norm, r_prev);
+    report.cuts += damped.cuts;
+    if (!std::isfinite(damped.residual)) return false;
     // The full step's size (a halved one says nothing of the error left).
-    const double full_step = cut == 0 ? (qp.x - x_k).lpNorm<Eigen::Infinity>() : INFINITY;
-    u = u_new;
-    f = f_new;
+    const double full_step = damped.cuts == 0 ? (qp.x - x_k).lpNorm<Eigen::Infinity>() : INFINITY;
+    u = damped.u;
+    f = damped.f;
     qp.x = u(free_dofs_);
     state.u = u;
     state.qp = std::move(qp);
-    report.history.push_back(r_new);
-    report.residual = r_new;
-    if (r_new <= newton_tol || full_step <= newton_step_tol) return true;
-    r_prev = r_new;
+    report.history.push_back(damped.residual);
+    report.residual = damped.residual;
+    if (damped.residual <= newton_tol || full_step <= newton_step_tol) return true;
+    r_prev = damped.residual;
   }
   return false;
 }
