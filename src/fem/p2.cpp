@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "fem/vector_p1.hpp"
+
 namespace fsi {
 
 P2Space::P2Space(const Mesh& mesh) : mesh_(mesh), nodes_(mesh.vertices), edge_of_vertex_(mesh.num_vertices()) {
@@ -70,6 +72,16 @@ P2Values p2_values(const P1Triangle& T, const Eigen::Vector3d& l) {
     v.grad.row(3 + k) = 4 * (l[m] * T.grad.row(k) + l[k] * T.grad.row(m));
   }
   return v;
+}
+
+P2VectorAt p2_vector_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& w, int n) {
+  P2VectorAt out;
+  for (int i = 0; i < 6; ++i)
+    for (int c = 0; c < 2; ++c) {
+      out.value[c] += w[dof(nodes[i], c, n)] * v.N[i];
+      out.grad.row(c) += w[dof(nodes[i], c, n)] * v.grad.row(i);
+    }
+  return out;
 }
 
 }  // namespace fsi

@@ -78,4 +78,12 @@ void integrate_p2(const P2Space& space, const TriangleRule& rule, Kernel&& kerne
   }
 }
 
+// A P2 vector field w (2n, dof(node, c) = c·n + node) at a point of an element with
+// nodes `nodes` and basis values `v` there: its value and gradient (row c = ∇w_c).
+struct P2VectorAt {
+  Point value = Point::Zero();
+  Eigen::Matrix2d grad = Eigen::Matrix2d::Zero();
+};
+P2VectorAt p2_vector_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& w, int n);
+
 }  // namespace fsi

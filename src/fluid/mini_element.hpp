@@ -2,8 +2,11 @@
 // on one triangle, for
 //     ∫ 2μ ε(v):ε(w) − ∫ (div w) p + κ ∫ v·w = ∫ f·w,   −∫ (div v) q = 0,
 // with κ = χ_T/ε the penalty of the fictitious domain. Bubble integrals are exact
-// (closed forms below). The two bubble unknowns are condensed statically, leaving
-// a symmetric 9×9 matrix on the local dofs [v1 at 3 vertices, v2 at 3, p at 3].
+// (closed forms below). The local system is the sum of small integrators, one per
+// term (viscous, divergence, a mass with a coefficient: the penalty now, ρ/Δt for
+// time), and of any ElementTerm a solver adds (convection, SPEC §10). The two bubble
+// unknowns are condensed statically, leaving a 9×9 matrix on the local dofs
+// [v1 at 3 vertices, v2 at 3, p at 3], symmetric while every term is.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +20,7 @@ namespace fsi {
 using Matrix9d = Eigen::Matrix<double, 9, 9>;
 using Vector9d = Eigen::Matrix<double, 9, 1>;
 using Matrix29d = Eigen::Matrix<double, 2, 9>;
+using Matrix92d = Eigen::Matrix<double, 9, 2>;
 
 // Load integrals of one triangle, independent of χ: ∫ f·(λ_a e_c) and ∫ f_d b.
 struct ElementLoad {
@@ -28,18 +32,53 @@ struct ElementLoad {
 ElementLoad element_load(const P1Triangle& T, const std::function<Point(const Point&)>& f,
                          const TriangleRule& rule);
 
+// The local system before condensation, each integrator adding its term:
+//   [M      E_col] [V; P]   [F_VP]
+//   [E_row  A_bb ] [β]    = [F_b ]
+// M = [A_VV  B_PVᵀ; B_PV  0] on [v1(3), v2(3), p(3)], β the bubble's two coefficients.
+struct MiniLocal {
+  Matrix9d M = Matrix9d::Zero();
+  Eigen::Matrix2d A_bb = Eigen::Matrix2d::Zero();
+  Matrix29d E_row = Matrix29d::Zero();  // the bubble's rows against [V; P]
+  Matrix92d E_col = Matrix92d::Zero();  // [V; P]'s rows against the bubble
+  bool symmetric = true;                // no term has broken the symmetry
+};
+
+// ∫ 2μ ε(v):ε(w). The bubble couples to no P1 velocity here (∇λ_a is constant on T
+// and ∫_T ∇b = 0).
+void add_viscous(const P1Triangle& T, double mu, MiniLocal& e);
+// −∫ (div w) p − ∫ (div v) q (with −∫ div(b e_d) q = ∫ b ∂_d q, b = 0 on ∂T).
+void add_divergence(const P1Triangle& T, MiniLocal& e);
+// κ ∫ v·w: the penalty χ_T/ε (eq. 25); ρ/Δt for a time step.
+void add_mass(const P1Triangle& T, double kappa, MiniLocal& e);
+
+// A further term of the momentum equation on triangle t (an Oseen or Newton
+// convection term for Navier–Stokes): adds itself to e, and clears e.symmetric if its
+// form is not symmetric (the solver paths that need symmetry then refuse the system).
+class ElementTerm {
+ public:
+  virtual ~ElementTerm() = default;
+  virtual void add(int t, const P1Triangle& T, MiniLocal& e) const = 0;
+  virtual bool symmetric() const = 0;
+};
+
+// The Stokes terms with the penalty κ: viscous, divergence, mass.
+MiniLocal mini_local(const P1Triangle& T, double mu, double kappa);
+
 // The bubble's own rows: A_bb β + E [V; P] = F_b.
 struct BubbleBlock {
   Eigen::Matrix2d A_bb_inv;
   Matrix29d E;
 };
 BubbleBlock bubble_block(const P1Triangle& T, double mu, double kappa);
+BubbleBlock bubble_block(const MiniLocal& e);
 
 struct CondensedElement {
-  Matrix9d K;    // M − Eᵀ A_bb⁻¹ E
-  Vector9d F;    // [F_V; 0] − Eᵀ A_bb⁻¹ F_b
+  Matrix9d K;    // M − E_col A_bb⁻¹ E_row
+  Vector9d F;    // [F_V; 0] − E_col A_bb⁻¹ F_b
 };
 
+CondensedElement condense(const MiniLocal& e, const ElementLoad& load);
 CondensedElement condensed_mini_element(const P1Triangle& T, double mu, double kappa,
                                         const ElementLoad& load);
 

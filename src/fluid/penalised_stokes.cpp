@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "common/errors.hpp"
+
 namespace fsi {
 
 PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const VectorField& f,
@@ -46,6 +48,13 @@ void PenalisedStokes::set_body_force(const VectorField& f) {
   ++version_;
 }
 
+void PenalisedStokes::add_term(std::shared_ptr<const ElementTerm> term) {
+  strategy_->settle();  // a deferred expansion's bubbles belong to the old operator
+  assembler_.add_term(std::move(term));
+  strategy_->load_changed();  // the far field's factors hold the old operator
+  ++version_;
+}
+
 void PenalisedStokes::reset() {
   solved_once_ = false;
   ++version_;
@@ -59,6 +68,10 @@ const FluidSolution& PenalisedStokes::solve(SampledTriangles sampled) {
     ++timing_.reused;
     return solution(sampled);
   }
+  if (!assembler_.symmetric() && strategy_->needs_symmetry())
+    throw SolverFailure("the fluid's operator is unsymmetric and " + strategy_->name() +
+                        " factors symmetric systems only; allowed: the whole factorisation with umfpack, "
+                        "umfpack-metis or eigen-lu");
   strategy_->solve(chi_, eps_, sampled);
   solved_once_ = true;
   solved_version_ = version_;

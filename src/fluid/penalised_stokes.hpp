@@ -56,6 +56,12 @@ class PenalisedStokes {
   void set_eps(double eps);
   // A new body force f_F (the same χ may follow: the next solve solves again).
   void set_body_force(const VectorField& f);
+  // A further term of the operator (mini_element.hpp ElementTerm: convection for
+  // Navier–Stokes); a new version. An unsymmetric term needs a solver path that
+  // factors unsymmetric systems (`whole` with "umfpack", "umfpack-metis" or "eigen-lu"):
+  // solve() refuses the others with a SolverFailure naming them.
+  void add_term(std::shared_ptr<const ElementTerm> term);
+  bool symmetric() const { return assembler_.symmetric(); }
   // Where χ is expected to go (per triangle, as χ; empty: nowhere known), e.g. the
   // structure under its applied loads alone: the substructured solve's first near
   // region covers it too.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+#include <type_traits>
 
 #include "common/errors.hpp"
 #include "fluid/mumps_handle.hpp"
@@ -87,6 +88,10 @@ namespace {
                       "); check the Dirichlet boundary and the penalty ε");
 }
 
+using CholmodLdlt = Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower>;
+using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+using EigenLu = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
+
 // Eigen's own solvers and its CHOLMOD wrapper share one shape.
 template <class Factorization>
 class EigenSolver final : public SparseDirectSolver {
@@ -95,6 +100,7 @@ class EigenSolver final : public SparseDirectSolver {
   Factorization& factorization() { return factorization_; }
   std::string name() const override { return name_; }
   FactorStatistics statistics() const override;
+  bool needs_symmetry() const override { return !std::is_same_v<Factorization, EigenLu>; }
 
  protected:
   void analyze_pattern(const SparseMatrix& A) override { factorization_.analyzePattern(A); }
@@ -113,9 +119,6 @@ class EigenSolver final : public SparseDirectSolver {
   mutable Factorization factorization_;
 };
 
-using CholmodLdlt = Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower>;
-using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
-using EigenLu = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
 
 template <class Factorization>
 FactorStatistics EigenSolver<Factorization>::statistics() const {
@@ -151,6 +154,7 @@ class UmfpackSolver final : public SparseDirectSolver {
   FactorStatistics statistics() const override {
     return {info_[UMFPACK_LNZ] + info_[UMFPACK_UNZ], info_[UMFPACK_FLOPS]};
   }
+  bool needs_symmetry() const override { return false; }  // LU: any matrix
 
  protected:
   void analyze_pattern(const SparseMatrix& A) override {
@@ -239,6 +243,7 @@ class MumpsSolver final : public SparseDirectSolver {
   FactorStatistics statistics() const override {
     return {static_cast<double>(id_.infog[28]), id_.rinfog[2]};  // INFOG(29), RINFOG(3)
   }
+  bool needs_symmetry() const override { return true; }  // SYM = 2 reads the lower triangle
 
  protected:
   void analyze_pattern(const SparseMatrix& A) override {

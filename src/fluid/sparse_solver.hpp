@@ -40,6 +40,9 @@ class SparseDirectSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   virtual std::string name() const = 0;
   virtual FactorStatistics statistics() const { return {}; }
+  // Whether it factors symmetric matrices only (it reads one triangle, or pivots
+  // symmetrically: LDLᵀ); an unsymmetric K (convection) needs a solver that does not.
+  virtual bool needs_symmetry() const = 0;
 
   int analyses() const { return analyses_; }
   int factorizations() const { return factorizations_; }
@@ -66,7 +69,9 @@ inline const char* const kDefaultSparseSolver = "mumps-metis";
 // "umfpack-metis": its symmetric strategy, METIS, no iterative refinement.
 // "cholmod-ldlt": CHOLMOD simplicial LDLᵀ (METIS); "eigen-ldlt": Eigen's
 // SimplicialLDLT (AMD); "eigen-lu": Eigen's SparseLU (COLAMD). The LDLᵀ without
-// pivoting rely on the system being nearly quasi-definite.
+// pivoting rely on the system being nearly quasi-definite. Symmetric only (needs_symmetry):
+// the MUMPS, CHOLMOD and Eigen LDLᵀ ones; "umfpack", "umfpack-metis" (LU, its
+// symmetric strategy an ordering choice) and "eigen-lu" factor any matrix.
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name);
 
 // MUMPS as "mumps-metis" but with the elimination order given (order[k] = the k-th

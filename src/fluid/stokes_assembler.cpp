@@ -143,11 +143,23 @@ void StokesAssembler::set_body_force(const VectorField& f) {
   assembled_ = false;  // K is unchanged, but rhs_ holds the old loads
 }
 
+MiniLocal StokesAssembler::local(int t, double kappa) const {
+  MiniLocal e = mini_local(geometry_[t], mu_, kappa);
+  for (const auto& term : terms_) term->add(t, geometry_[t], e);
+  return e;
+}
+
+void StokesAssembler::add_term(std::shared_ptr<const ElementTerm> term) {
+  symmetric_ = symmetric_ && term->symmetric();
+  terms_.push_back(std::move(term));
+  assembled_ = false;  // the next assemble() assembles every triangle with it
+}
+
 // Adds sign × (the condensed element of triangle t with penalty κ) to K and rhs.
 void StokesAssembler::add_element(int t, double kappa, double sign) {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
-  const CondensedElement ce = condensed_mini_element(geometry_[t], mu_, kappa, loads_[t]);
+  const CondensedElement ce = condense(local(t, kappa), loads_[t]);
   const int* slots = &slot_[81 * static_cast<std::size_t>(t)];
   double* values = K_.valuePtr();
   for (int i = 0; i < 9; ++i) {
@@ -201,7 +213,7 @@ std::array<int, 9> StokesAssembler::element_dofs(int t) const {
 ElementSystem StokesAssembler::element_system(int t, double kappa) const {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
-  const CondensedElement ce = condensed_mini_element(geometry_[t], mu_, kappa, loads_[t]);
+  const CondensedElement ce = condense(local(t, kappa), loads_[t]);
   ElementSystem e{element_dofs(t), ce.K, ce.F};
   for (int j = 0; j < 9; ++j)
     if (e.dof[j] < 0)
@@ -241,7 +253,7 @@ void StokesAssembler::scatter(const std::vector<int>& reduced, const Eigen::Vect
 
 // The bubble coefficients from the vertex values (static condensation reversed).
 void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) const {
-  const BubbleBlock bb = bubble_block(geometry_[t], mu_, kappa);
+  const BubbleBlock bb = bubble_block(local(t, kappa));
   const auto& tri = mesh_.triangles[t];
   Vector9d local;
   for (int k = 0; k < 3; ++k) local[k] = out.v1[tri[k]], local[3 + k] = out.v2[tri[k]], local[6 + k] = out.p[tri[k]];

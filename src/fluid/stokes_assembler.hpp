@@ -10,6 +10,7 @@
 #include <array>
 #include <functional>
 #include <future>
+#include <memory>
 #include <vector>
 
 #include "fem/vector_p1.hpp"  // VectorField
@@ -55,6 +56,14 @@ class StokesAssembler {
   double mu() const { return mu_; }
   // A new body force f (its element loads); the next assemble() assembles everything.
   void set_body_force(const VectorField& f);
+  // A further term of every element (mini_element.hpp ElementTerm: convection); the
+  // next assemble() assembles everything. A term whose data change (a new velocity to
+  // linearise about) needs forget_assembly() before the next assemble(): the update
+  // of the triangles whose χ changed assumes nothing else did.
+  void add_term(std::shared_ptr<const ElementTerm> term);
+  // Whether K is symmetric (every term is): the solver paths that need it refuse
+  // otherwise (PenalisedStokes::solve).
+  bool symmetric() const { return symmetric_; }
   int unknowns() const { return static_cast<int>(free_.size()); }
   long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
 
@@ -93,10 +102,14 @@ class StokesAssembler {
  private:
   void build_whole_pattern();
   void add_element(int t, double kappa, double sign);
+  // Triangle t's local system with the penalty κ: the Stokes terms and the added ones.
+  MiniLocal local(int t, double kappa) const;
 
   const Mesh& mesh_;
   double mu_;
   std::vector<ElementLoad> loads_;
+  std::vector<std::shared_ptr<const ElementTerm>> terms_;  // beyond Stokes (add_term)
+  bool symmetric_ = true;
   std::vector<P1Triangle> geometry_;
   Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)
   std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed

@@ -30,4 +30,11 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
   return R;
 }
 
+Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,
+                 const Eigen::VectorXd& kappa) {
+  const Eigen::Matrix2Xd R =
+      momentum_residual(mesh, mu, [f_F](const Point&) { return f_F; }, s, mesh.vertices_on(label), kappa);
+  return -R.rowwise().sum();
+}
+
 }  // namespace fsi

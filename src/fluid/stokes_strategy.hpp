@@ -56,6 +56,9 @@ class StokesSolveStrategy {
   // ended with may serve its first solve (see the strategy).
   virtual void continue_last_run() {}
   virtual std::string name() const = 0;
+  // Whether it factors symmetric systems only (PenalisedStokes::solve refuses an
+  // unsymmetric K then, naming it).
+  virtual bool needs_symmetry() const = 0;
   virtual const RegionSchurSolver* region() const { return nullptr; }
 };
 
@@ -64,6 +67,7 @@ class WholeSolve final : public StokesSolveStrategy {
   WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out);
   void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) override;
   std::string name() const override { return solver_->name(); }
+  bool needs_symmetry() const override { return solver_->needs_symmetry(); }
   void new_run() override { assembler_.forget_assembly(); }
 
  private:
@@ -95,6 +99,8 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   // The far field's condensed load is the old one: the next solve builds a new region.
   void load_changed() override;
   std::string name() const override { return whole_.name() + "+schur"; }
+  // MUMPS's Schur complement (SYM = 2) and the far field's self-adjoint products.
+  bool needs_symmetry() const override { return true; }
   const RegionSchurSolver* region() const override { return region_.get(); }
 
  private:

@@ -24,7 +24,7 @@
 #include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
 #include "run/problem_kinds.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 #include "run/run_case.hpp"
 #include "run/setup_cache.hpp"
 #include "run/structure_outputs.hpp"
@@ -175,7 +175,7 @@ class BodyFittedFsi final : public BodyFittedProblem {
     };
     if (options_.initial_displacement) loop.initial = *options_.initial_displacement;
     const ProbeSet probes(s_->mesh(), c_.output.probes);
-    loop.observe = probes.observer();  // history.csv's u_x_i, u_y_i
+    loop.observe = probe_observer(probes);  // history.csv's u_x_i, u_y_i
     result_ = loop.run();
     last_ = fluid_step_->last();
     add_pass_times(times);

@@ -10,7 +10,7 @@
 #include "solid/contact_gap.hpp"
 #include "run/output_dir.hpp"
 #include "run/problem_kinds.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 #include "run/run_case.hpp"
 #include "run/structure_outputs.hpp"
 #include "run/structure_setup.hpp"

@@ -5,7 +5,7 @@
 #include "common/interrupt.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 #include "run/structure_outputs.hpp"
 #include "run/summary.hpp"
 #include "fem/vector_p1.hpp"
@@ -69,6 +69,11 @@ RunMeasures coupled_measures(const Case& c, const CouplingResult& r) {
   m.iterations = r.iterations;
   m.displacement = RunMeasures::Displacement{max_displacement(r.structure.u), component(r.structure.u, 1).minCoeff()};
   return m;
+}
+
+PassObserver probe_observer(const ProbeSet& probes) {
+  if (probes.empty()) return nullptr;
+  return [&probes](const Eigen::VectorXd& u_tilde, IterationRecord& rec) { rec.probes = probes.displacements(u_tilde); };
 }
 
 RunMeasures::Stop coupled_stop(const CouplingResult& r) {

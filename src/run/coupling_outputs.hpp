@@ -7,6 +7,7 @@
 
 #include "coupling/fixed_point.hpp"
 #include "io/case.hpp"
+#include "fem/probes.hpp"
 #include "run/output_dir.hpp"
 #include "run/run_measures.hpp"
 #include "run/structure_setup.hpp"
@@ -26,6 +27,10 @@ int exit_status_of(const CouplingResult& r);
 // The measures of the loop's result r (its failure final: set any found after the
 // loop first): status, iterations, the displacement of ũ.
 RunMeasures coupled_measures(const Case& c, const CouplingResult& r);
+// Fills each pass's record with ũ at output.probes (history.csv's u_x_i, u_y_i);
+// none without probes.
+PassObserver probe_observer(const ProbeSet& probes);
+
 // The stop of a loop that ran (SPEC §5; the paper's k = iterations − 1).
 RunMeasures::Stop coupled_stop(const CouplingResult& r);
 

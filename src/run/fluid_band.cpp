@@ -26,7 +26,7 @@ std::array<double, 4> bounding_box(const Mesh& mesh, const Eigen::VectorXd* u) {
 
 bool band_needs_structure(const Case& c) { return c.fluid && c.fluid->h_near > 0 && !c.fluid->band_box; }
 
-std::optional<std::array<double, 4>> fluid_band_box(const Case& c, const StructureSetup* s) {
+std::optional<std::array<double, 4>> fluid_band_box(const Case& c, StructureSetup* s) {
   const FluidParams& f = *c.fluid;
   if (!(f.h_near > 0)) return std::nullopt;
   std::array<double, 4> band;
@@ -35,7 +35,7 @@ std::optional<std::array<double, 4>> fluid_band_box(const Case& c, const Structu
   } else {
     Eigen::VectorXd u;
     try {
-      u = s->solver->solve(s->b_applied).u;
+      u = s->load_alone().u;
     } catch (const QpError& e) {
       throw SolverFailure(std::string("the load-alone contact solution for fluid.band failed: ") + e.what());
     }

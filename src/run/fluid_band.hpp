@@ -20,9 +20,10 @@ namespace fsi {
 bool band_needs_structure(const Case& c);
 
 // The band's box, clipped to D's box; nullopt without h_near. `s` is read only when
-// band_needs_structure(c): the QP of eq. (17) with the structure's own loads b_applied
-// (f_S, h_N), without the fluid. Throws SolverFailure if that QP fails.
-std::optional<std::array<double, 4>> fluid_band_box(const Case& c, const StructureSetup* s);
+// band_needs_structure(c): its load-alone solution (StructureSetup::load_alone, the QP
+// of eq. 17 with the structure's own loads f_S, h_N). Throws SolverFailure if that QP
+// fails.
+std::optional<std::array<double, 4>> fluid_band_box(const Case& c, StructureSetup* s);
 
 // Whether `deformed` (the structure's final configuration) lies inside the band, with
 // a margin of h_near: if not, part of it moved through coarse triangles, and

@@ -43,7 +43,7 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
 Mesh make_fluid_mesh(const Case& c) {
   std::optional<std::array<double, 4>> band;
   if (band_needs_structure(c)) {
-    const StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
+    StructureSetup s = make_structure(c, make_structure_mesh(c), nullptr);
     band = fluid_band_box(c, &s);
   } else {
     band = fluid_band_box(c, nullptr);

@@ -5,13 +5,6 @@
 
 namespace fsi {
 
-Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,
-                 const Eigen::VectorXd& kappa) {
-  const Eigen::Matrix2Xd R =
-      momentum_residual(mesh, mu, [f_F](const Point&) { return f_F; }, s, mesh.vertices_on(label), kappa);
-  return -R.rowwise().sum();
-}
-
 Json obstacle_forces_json(const Case& c, FluidSetup& f) {
   const FluidSolution* s = nullptr;
   if (f.stokes->has_solution()) {

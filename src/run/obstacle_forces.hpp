@@ -25,9 +25,4 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f);
 // penalty); the holes labelled Sigma_5_i, or Sigma_5 for [obstacle].
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa);
 
-// The fluid's force on the hole labelled `label` of a solution computed with the
-// penalty `kappa` = χ/ε per triangle.
-Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,
-                 const Eigen::VectorXd& kappa);
-
 }  // namespace fsi

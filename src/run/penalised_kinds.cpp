@@ -7,7 +7,7 @@
 #include "coupling/penalised_step.hpp"
 #include "run/coupling_outputs.hpp"
 #include "run/penalised_problem.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/region_hint.hpp"
 
@@ -45,7 +45,7 @@ class PenalisedFsi final : public PenalisedProblem {
       if (options_.progress) options_.progress(line);
     };
     const ProbeSet probes(ref, c_.output.probes, s_->p2());
-    loop.observe = probes.observer();  // history.csv's u_x_i, u_y_i
+    loop.observe = probe_observer(probes);  // history.csv's u_x_i, u_y_i
     if (options_.initial_displacement) {
       loop.initial = *options_.initial_displacement;
       f_->stokes->continue_last_run();  // the kept near region may serve the start's χ

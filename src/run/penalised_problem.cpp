@@ -12,7 +12,7 @@
 #include "run/fluid_outputs.hpp"
 #include "run/obstacle_forces.hpp"
 #include "run/output_dir.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 
 namespace fsi {
 namespace {
@@ -91,8 +91,9 @@ FluidForce PenalisedProblem::fluid_force() const {
   const Point f_F = c_.fluid->f;
   const auto f = [f_F](const Point&) { return f_F; };
   const ForceModel model = c_.coupling.force == "large" ? ForceModel::large : ForceModel::small;
-  if (s_->p2()) return FluidForce(*s_->p2(), c_.fluid->mu, c_.coupling.eps, f, model);
-  return FluidForce(s_->mesh(), c_.fluid->mu, c_.coupling.eps, f, model, c_.coupling.force_sampling);
+  const double eps = f_->stokes->eps();  // the fluid's ε (a sweep's row sets it there): one owner
+  if (s_->p2()) return FluidForce(*s_->p2(), c_.fluid->mu, eps, f, model);
+  return FluidForce(s_->mesh(), c_.fluid->mu, eps, f, model, c_.coupling.force_sampling);
 }
 
 void PenalisedProblem::complete_fluid() {
@@ -114,7 +115,7 @@ void PenalisedProblem::measure(RunResult& r) {
                       ", max displacement " + std::to_string(max_u) + ")" +
                       (norms.failure.empty() ? "" : ": " + norms.failure);
   measure_final_state(r, f_stats_);
-  r.measures.fluid_in_structure = RunMeasures::FluidInStructure{norms.v, norms.v / c_.coupling.eps, norms.v_chi};
+  r.measures.fluid_in_structure = RunMeasures::FluidInStructure{norms.v, norms.v / f_->stokes->eps(), norms.v_chi};
   // The velocity picture, drawn and encoded on a second thread from here: it is the
   // largest output (~35 ms at hF = 0.01), and it overlaps the summary and the other
   // files. The fluid is complete by now (complete_fluid), so the reads that follow

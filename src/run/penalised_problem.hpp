@@ -33,8 +33,8 @@ class PenalisedProblem : public FluidStructureProblem {
   // The vertices drawn in red on the velocity picture (the contact zone).
   virtual std::vector<int> contact_vertices() const = 0;
 
-  // eq. (33)'s fluid terms (or their pull-back) with the case's fluid and ε, on the
-  // structure's P1 mesh or its P2 space.
+  // eq. (33)'s fluid terms (or their pull-back) with the case's fluid and the fluid
+  // solver's ε, on the structure's P1 mesh or its P2 space.
   FluidForce fluid_force() const;
   // After the solve: the last fluid solution everywhere when an output draws or writes
   // the whole fluid (null without them, or if completing it fails: result_.failure).

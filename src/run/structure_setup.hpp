@@ -5,6 +5,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "io/case.hpp"
@@ -16,6 +17,7 @@
 namespace fsi {
 
 struct StructureSetup {
+ public:
   Lame lame;
   std::shared_ptr<ContactGap> gap;  // contact.gap's rule, obstacles and candidates
   std::unique_ptr<DiskFoundation> foundation;
@@ -25,6 +27,13 @@ struct StructureSetup {
   // The mesh the dofs live on: the structure's (P1) or its P2 space's nodal mesh.
   const Mesh& mesh() const { return solver->mesh(); }
   const P2Space* p2() const { return solver->p2(); }  // null with structure.element = "P1"
+  // The contact solution under the applied loads alone (eq. 17 with b_applied, no
+  // fluid, from the linearisation at rest): fluid.band's box and the fluid's first
+  // region hint. Solved once per setup; QpError propagates.
+  const ContactSolution& load_alone();
+
+ private:
+  std::optional<ContactSolution> load_alone_;
 };
 
 // Generates or reads the mesh: a bad user file is an InputError (exit 2), a failure

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 
 namespace fsi {
 

@@ -102,16 +102,6 @@ Eigen::VectorXd assemble_surface_load(const P2Space& space, int label, const Vec
   return b;
 }
 
-P2VectorAt p2_vector_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& w, int n) {
-  P2VectorAt out;
-  for (int i = 0; i < 6; ++i)
-    for (int c = 0; c < 2; ++c) {
-      out.value[c] += w[dof(nodes[i], c, n)] * v.N[i];
-      out.grad.row(c) += w[dof(nodes[i], c, n)] * v.grad.row(i);
-    }
-  return out;
-}
-
 std::vector<int> clamped_dofs(const P2Space& space, int label) {
   return both_components(space.nodes_on(label), space.num_nodes());
 }

@@ -25,12 +25,4 @@ Eigen::VectorXd assemble_surface_load(const P2Space& space, int label, const Vec
 // Both components of every node on `label` (a clamped side).
 std::vector<int> clamped_dofs(const P2Space& space, int label);
 
-// A P2 vector field w (2n, dof(node, c) = c·n + node) at a point of an element with
-// nodes `nodes` and basis values `v` there: its value and gradient (row c = ∇w_c).
-struct P2VectorAt {
-  Point value = Point::Zero();
-  Matrix2 grad = Matrix2::Zero();
-};
-P2VectorAt p2_vector_at(const std::array<int, 6>& nodes, const P2Values& v, const Eigen::VectorXd& w, int n);
-
 }  // namespace fsi

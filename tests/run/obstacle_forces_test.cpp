@@ -16,7 +16,7 @@
 #include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/fluid_setup.hpp"
-#include "run/obstacle_forces.hpp"
+#include "fluid/stokes_residual.hpp"
 #include "support/channel.hpp"
 #include "support/traction.hpp"
 

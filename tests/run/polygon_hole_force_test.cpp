@@ -17,7 +17,7 @@
 #include "mesh/gmsh_io.hpp"
 #include "mesh/polygon.hpp"
 #include "run/fluid_setup.hpp"
-#include "run/obstacle_forces.hpp"
+#include "fluid/stokes_residual.hpp"
 #include "support/channel.hpp"
 #include "support/traction.hpp"
 

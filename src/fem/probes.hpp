@@ -5,7 +5,6 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "coupling/coupling_result.hpp"
 #include "fem/p2.hpp"
 #include "fem/point_locator.hpp"
 #include "mesh/mesh.hpp"
@@ -24,8 +23,7 @@ class ProbeSet {
   ProbeSet(const Mesh& reference, const std::vector<Point>& points, const P2Space* p2 = nullptr);
   // u at each point, in the points' order.
   std::vector<Point> displacements(const Eigen::VectorXd& u) const;
-  // Fills each pass's record with ũ at the points (none if there are no points).
-  PassObserver observer() const;
+  bool empty() const { return at_.empty(); }
 
  private:
   const Mesh& reference_;

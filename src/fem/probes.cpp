@@ -1,7 +1,6 @@
-#include "run/probes.hpp"
+#include "fem/probes.hpp"
 
 #include "fem/point_locator.hpp"
-#include "solid/p2_elasticity.hpp"
 
 namespace fsi {
 
@@ -42,11 +41,6 @@ std::vector<Point> ProbeSet::displacements(const Eigen::VectorXd& u) const {
   std::vector<Point> d;
   for (const Location& at : at_) d.push_back(interpolate(reference_, u, at, p2_));
   return d;
-}
-
-PassObserver ProbeSet::observer() const {
-  if (at_.empty()) return nullptr;
-  return [this](const Eigen::VectorXd& u_tilde, IterationRecord& rec) { rec.probes = displacements(u_tilde); };
 }
 
 Point resultant(const Eigen::VectorXd& load) {
