@@ -28,7 +28,7 @@
 #include "common/interrupt.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 
 namespace {
 

@@ -303,7 +303,7 @@ void check_obstacles(const Case& c, const Origin& o) {
 
 }  // namespace
 
-// structure.shape = "none": the fluid alone, in a penalised box (run/run_fluid.cpp).
+// structure.shape = "none": the fluid alone, in a penalised box (run/fluid_problem.cpp).
 void check_no_structure(const Case& c, const Origin& o) {
   const char* allowed = "structure.shape = \"none\" with a [fluid] section, fluid.method = \"penalised\", and a band given as a box";
   if (!c.fluid) fail(o, "structure.shape", "= \"none\" leaves nothing to solve without a [fluid] section", allowed);

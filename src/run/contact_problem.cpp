@@ -8,11 +8,11 @@
 #include "common/fault.hpp"
 #include "io/atomic_file.hpp"
 #include "solid/contact_gap.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
 #include "fem/probes.hpp"
 #include "run/run_case.hpp"
-#include "run/structure_outputs.hpp"
+#include "run/outputs/structure_outputs.hpp"
 #include "run/structure_setup.hpp"
 
 namespace fsi {

@@ -126,7 +126,7 @@ const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::Vect
 
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
-  Json j = {{"method", "penalised"},  // fluid.method (run_body_fitted.cpp writes the other)
+  Json j = {{"method", "penalised"},  // fluid.method (run/body_fitted_problem.cpp writes the other)
             {"unknowns", stokes.unknowns()},
             {"nonzeros", stokes.nonzeros()},
             {"solver", stokes.solver_name()},

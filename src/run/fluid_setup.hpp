@@ -12,7 +12,7 @@
 #include "fluid/penalised_stokes.hpp"
 #include "io/case.hpp"
 #include "mesh/gmsh_io.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

@@ -1,6 +1,6 @@
 #include "run/fluid_structure_problem.hpp"
 
-#include "run/coupling_outputs.hpp"
+#include "run/outputs/coupling_outputs.hpp"
 
 namespace fsi {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "coupling/coupling_result.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 #include "run/run_case.hpp"
 #include "run/setup_cache.hpp"
 #include "run/structure_setup.hpp"

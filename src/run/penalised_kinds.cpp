@@ -5,7 +5,7 @@
 #include "common/format.hpp"
 #include "coupling/fixed_point.hpp"
 #include "coupling/penalised_step.hpp"
-#include "run/coupling_outputs.hpp"
+#include "run/outputs/coupling_outputs.hpp"
 #include "run/penalised_problem.hpp"
 #include "fem/probes.hpp"
 #include "run/problem_kinds.hpp"

@@ -7,11 +7,11 @@
 #include "io/atomic_file.hpp"
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
-#include "run/coupling_outputs.hpp"
+#include "run/outputs/coupling_outputs.hpp"
 #include "run/fluid_band.hpp"
-#include "run/fluid_outputs.hpp"
-#include "run/obstacle_forces.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/fluid_outputs.hpp"
+#include "run/outputs/obstacle_forces.hpp"
+#include "run/outputs/output_dir.hpp"
 #include "fem/probes.hpp"
 
 namespace fsi {

@@ -4,7 +4,7 @@
 
 #include "common/errors.hpp"
 #include "io/output_path.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 
 namespace fsi {
 namespace {
@@ -37,7 +37,7 @@ void fail_writing(RunResult& r, const std::string& what) {
   r.failure = (r.failure.empty() ? "" : r.failure + "; ") + "writing the outputs: " + what;
 }
 
-// The run's directory (run/output_dir.hpp): summary.json as "writing", then the
+// The run's directory (run/outputs/output_dir.hpp): summary.json as "writing", then the
 // problem's files (the "output" phase), then r.summary with its "timing_s". A failed
 // write turns r into a failure (exit status 1) naming the file and the reason; the
 // report keeps the numbers.

@@ -9,8 +9,8 @@
 #include "common/timer.hpp"
 #include "io/case.hpp"
 #include "run/problem.hpp"
-#include "run/run_measures.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/run_measures.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

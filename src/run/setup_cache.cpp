@@ -2,7 +2,7 @@
 
 #include "run/fluid_band.hpp"
 #include "run/mesh_checks.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

@@ -11,9 +11,9 @@
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
 #include "run/csv.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 #include "run/setup_cache.hpp"
-#include "run/sweep_table.hpp"
+#include "run/outputs/sweep_table.hpp"
 
 namespace fsi {
 namespace {

@@ -1,8 +1,8 @@
 // The structure's gap to its obstacles (SPEC §9): the paper's eq. (15), or the signed
 // distance re-linearised about the current state (solid/relinearised_contact.hpp), with
 // the obstacles and the candidate vertices; and the exact gap that summary.json
-// reports for either rule. The run builds it from the case (run/structure_setup.hpp
-// case_contact_gap).
+// reports for either rule. The run builds it from the case (case_contact_gap,
+// run/case_contact.hpp).
 #pragma once
 
 #include <memory>

@@ -10,7 +10,7 @@
 #include "common/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 #include "run/setup_cache.hpp"
 #include "study/convergence_report.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

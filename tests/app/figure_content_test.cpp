@@ -14,7 +14,7 @@
 
 #include "io/case.hpp"
 #include "io/figure.hpp"
-#include "run/fluid_outputs.hpp"
+#include "run/outputs/fluid_outputs.hpp"
 #include "support/cli.hpp"
 
 namespace fsi::figure_content_test {

@@ -9,7 +9,7 @@
 
 #include "common/errors.hpp"
 #include "run/csv.hpp"
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 
 namespace fsi::outputs_and_rows_test {
 namespace {

@@ -9,7 +9,7 @@
 #include "io/case.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/setup_cache.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi::setup_keys_test {
 namespace {

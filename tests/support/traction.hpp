@@ -1,7 +1,7 @@
 // The fluid's force on a boundary part by the traction integral ∮ σ(v_h, p_h) n ds,
 // n out of the obstacle (into the fluid), from the triangle on each edge (P1 + bubble
 // velocity, P1 pressure), 3 Gauss points per edge: an independent formula to set the
-// residual method's forces (run/obstacle_forces.hpp) against. σ_h is one order less
+// residual method's forces (hole_force, fluid/stokes_residual.hpp) against. σ_h is one order less
 // accurate than v_h, so the two agree only as h → 0.
 #pragma once
 

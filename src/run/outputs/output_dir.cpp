@@ -1,4 +1,4 @@
-#include "run/output_dir.hpp"
+#include "run/outputs/output_dir.hpp"
 
 #include <algorithm>
 #include <filesystem>

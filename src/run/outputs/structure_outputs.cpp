@@ -1,4 +1,4 @@
-#include "run/structure_outputs.hpp"
+#include "run/outputs/structure_outputs.hpp"
 
 #include <cmath>
 #include <cstdio>

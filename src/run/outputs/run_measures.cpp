@@ -1,4 +1,4 @@
-#include "run/run_measures.hpp"
+#include "run/outputs/run_measures.hpp"
 
 namespace fsi {
 

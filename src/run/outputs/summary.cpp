@@ -1,4 +1,4 @@
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 #include <cmath>
 

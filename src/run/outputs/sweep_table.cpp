@@ -1,4 +1,4 @@
-#include "run/sweep_table.hpp"
+#include "run/outputs/sweep_table.hpp"
 
 #include <cmath>
 #include <iomanip>

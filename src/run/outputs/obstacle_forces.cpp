@@ -1,4 +1,4 @@
-#include "run/obstacle_forces.hpp"
+#include "run/outputs/obstacle_forces.hpp"
 
 #include "common/errors.hpp"
 #include "fluid/stokes_residual.hpp"

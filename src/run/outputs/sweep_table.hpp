@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/case.hpp"
-#include "run/run_measures.hpp"
+#include "run/outputs/run_measures.hpp"
 
 namespace fsi {
 

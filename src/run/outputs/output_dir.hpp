@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "io/case.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

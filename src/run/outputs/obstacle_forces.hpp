@@ -11,7 +11,7 @@
 
 #include "io/case.hpp"
 #include "run/fluid_setup.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 
 namespace fsi {
 

@@ -1,11 +1,11 @@
-#include "run/fluid_outputs.hpp"
+#include "run/outputs/fluid_outputs.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
-#include "run/structure_outputs.hpp"
+#include "run/outputs/structure_outputs.hpp"
 
 namespace fsi {
 

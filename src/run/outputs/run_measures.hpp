@@ -9,7 +9,7 @@
 
 #include "common/timer.hpp"
 #include "mesh/mesh.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/summary.hpp"
 #include "solid/contact_solver.hpp"
 
 namespace fsi {

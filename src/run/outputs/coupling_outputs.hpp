@@ -8,8 +8,8 @@
 #include "coupling/fixed_point.hpp"
 #include "io/case.hpp"
 #include "fem/probes.hpp"
-#include "run/output_dir.hpp"
-#include "run/run_measures.hpp"
+#include "run/outputs/output_dir.hpp"
+#include "run/outputs/run_measures.hpp"
 #include "run/structure_setup.hpp"
 
 namespace fsi {

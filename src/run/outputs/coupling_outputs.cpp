@@ -1,4 +1,4 @@
-#include "run/coupling_outputs.hpp"
+#include "run/outputs/coupling_outputs.hpp"
 
 #include <iomanip>
 
@@ -6,8 +6,8 @@
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
 #include "fem/probes.hpp"
-#include "run/structure_outputs.hpp"
-#include "run/summary.hpp"
+#include "run/outputs/structure_outputs.hpp"
+#include "run/outputs/summary.hpp"
 #include "fem/vector_p1.hpp"
 
 namespace fsi {
