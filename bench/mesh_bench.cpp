@@ -21,7 +21,7 @@
 namespace fsi {
 namespace {
 
-// The geometry of mesh_fluid_in_gmsh (src/mesh/gmsh_model.cpp), meshed with `algorithm`.
+// The geometry of mesh_fluid_in_gmsh (src/mesh/gmsh_plugin.cpp), meshed with `algorithm`.
 std::size_t gmsh_box(int algorithm, double h, int smoothing, double h_near) {
   namespace geo = gmsh::model::geo;
   gmsh::clear();
@@ -36,7 +36,7 @@ std::size_t gmsh_box(int algorithm, double h, int smoothing, double h_near) {
                                       geo::addCircleArc(w, o, s), geo::addCircleArc(s, o, e)});
   geo::addPlaneSurface({outer, hole});
   geo::synchronize();
-  if (h_near > 0) {  // add_band_field's Box field (src/mesh/gmsh_model.cpp)
+  if (h_near > 0) {  // add_band_field's Box field (src/mesh/gmsh_plugin.cpp)
     namespace field = gmsh::model::mesh::field;
     const int box = field::add("Box");
     const std::pair<const char*, double> values[] = {{"VIn", h_near}, {"VOut", h},   {"XMin", 0},  {"YMin", -0.06},

@@ -22,8 +22,8 @@ struct WorldBox {
 // Loads what a figure's first text needs (fontconfig's configuration and font list,
 // the FreeType faces of the title and the notes): ~10 ms once per process, which a
 // run spends on its second core while it meshes and solves (PenalisedProblem::set_up,
-// run/penalised_problem.cpp) instead of in its
-// first figure. Harmless to call more than once or from any thread.
+// run/penalised_problem.cpp) instead of in its first figure. Harmless to call more
+// than once or from any thread.
 void load_figure_fonts();
 
 class Figure {

@@ -59,7 +59,7 @@ struct Restart {
   double start = NAN;    // max |u| of that end state
   double own = NAN;      // max |u| of the scheme's own run from rest
   double value = NAN;    // max |u| where the restart ended
-  std::string verdict;   // what that says (see verdict_of in convergence_report.cpp)
+  std::string verdict;   // what that says (judge_restart in convergence_report.cpp)
 };
 
 struct Study {

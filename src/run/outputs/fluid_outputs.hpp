@@ -22,7 +22,8 @@ void write_fluid_png(const std::string& path, const Case& c, const Mesh& fluid_m
                      const std::vector<int>& contact_vertices, const std::string& title,
                      const std::string& note);
 // The same picture as PNG bytes, to be written later: PenalisedProblem::measure
-// (run/penalised_problem.cpp) draws it on a second core while the other files are written.
+// (run/penalised_problem.cpp) draws it on a second core while the summary and the
+// other files are written.
 std::string fluid_png(const std::string& name, const Case& c, const Mesh& fluid_mesh, const FluidSolution& s,
                       const Mesh& deformed_structure, const std::vector<int>& contact_vertices,
                       const std::string& title, const std::string& note);
