@@ -1,6 +1,6 @@
 // One kind of run (SPEC §2, §3, §5, §9): the steps that run() (run/run_case.hpp) takes in
 // turn, the shape of a deal.II tutorial's run(). Each kind is a type, chosen once from
-// the case by make_problem; run() owns what every kind shares: the output directory,
+// the case by make_problem (run/problem_kinds.hpp); run() owns what every kind shares: the output directory,
 // the timing of each phase, failures and interruption.
 //
 //   make_problem(case) ─► set_up ─► solve ─► measure ─► summarise ─► write
@@ -44,11 +44,5 @@ class Problem {
   // write is recorded by `out`, not thrown.
   virtual void write(RunOutputs& out) = 0;
 };
-
-// The kind of run the case asks for: contact alone (no [fluid]), the fluid alone
-// (structure.shape = "none"), or the fluid around the structure at rest
-// (coupling.max_iterations = 0) or coupled to it (SPEC §5), by fluid.method. Builds
-// nothing yet.
-std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options);
 
 }  // namespace fsi

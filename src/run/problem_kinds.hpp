@@ -1,5 +1,5 @@
-// The kinds of run (run/problem.hpp), each defined in its own file; make_problem
-// (run/problem.cpp) picks one.
+// The kinds of run (run/problem.hpp), each defined in its own file, and make_problem,
+// which picks one.
 #pragma once
 
 #include <memory>
@@ -7,6 +7,12 @@
 #include "run/problem.hpp"
 
 namespace fsi {
+
+// The kind of run the case asks for: contact alone (no [fluid]), the fluid alone
+// (structure.shape = "none"), or the fluid around the structure at rest
+// (coupling.max_iterations = 0) or coupled to it (SPEC §5), by fluid.method. Builds
+// nothing yet.
+std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options);
 
 // SPEC §2: no [fluid] (run/contact_problem.cpp).
 std::unique_ptr<Problem> contact_problem(const Case& c, const RunOptions& options);

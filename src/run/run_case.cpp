@@ -5,6 +5,7 @@
 #include "common/errors.hpp"
 #include "io/output_path.hpp"
 #include "run/outputs/output_dir.hpp"
+#include "run/problem_kinds.hpp"
 
 namespace fsi {
 namespace {

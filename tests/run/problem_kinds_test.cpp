@@ -1,4 +1,4 @@
-// One pipeline (run/problem.hpp): the kind of run is a type chosen once from the case,
+// One pipeline (run/problem.hpp, run/problem_kinds.hpp): the kind of run is a type chosen once from the case,
 // and each kind writes what its summary says it is. A P2 structure coupled to the
 // penalised fluid runs to convergence (the fluid is sampled at its P2 nodes: a
 // sampling mesh of the P1 vertices made every P2 coupled run fail before).
@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "io/case.hpp"
-#include "run/problem.hpp"
+#include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
 
 namespace fsi::problem_kinds_test {

@@ -1,5 +1,3 @@
-#include "run/problem.hpp"
-
 #include "run/problem_kinds.hpp"
 
 namespace fsi {
