@@ -13,9 +13,7 @@ namespace fsi {
 
 FixedPointLoop::FixedPointLoop(CoupledMap& H, Relaxation& relaxation, const SparseMatrix& M, double tol,
                                int max_iterations)
-    : H_(H), relaxation_(relaxation), M_(M), tol_(tol), max_iterations_(max_iterations) {
-  relaxation_.project = [this](const Eigen::VectorXd& z) { return H_.structure().project(z); };
-}
+    : H_(H), relaxation_(relaxation), M_(M), tol_(tol), max_iterations_(max_iterations) {}
 
 CouplingResult FixedPointLoop::run(const Eigen::VectorXd& u0) {
   CouplingResult result;
@@ -34,6 +32,7 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
   const ContactSolution* warm = nullptr;
   const bool inexact = H_.structure().nonlinear();
   double last_move = 0;  // the last increment's largest dof (m)
+  const Projection project = [this](const Eigen::VectorXd& z) { return H_.structure().project(z); };
   for (int k = 1; k <= max_iterations_; ++k) {
     result.iterations = k;
     IterationRecord rec;
@@ -55,7 +54,7 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
     const bool converged = rec.increment < tol_;
     if (converged && pass.newton_step_tol > 0 && value.load.size()) solve_exactly(result, value.load, k, rec);
     result.history.push_back(rec);  // recorded before relaxing: kept if that fails
-    if (!converged && k < max_iterations_) u = relaxed_iterate(relaxation_, u, result.structure.u, k, rec, result);
+    if (!converged && k < max_iterations_) u = relaxed_iterate(relaxation_, project, u, result.structure.u, k, rec, result);
     if (progress) {
       char omega[16] = "-";
       if (std::isfinite(rec.omega)) std::snprintf(omega, sizeof omega, "%.3g", rec.omega);

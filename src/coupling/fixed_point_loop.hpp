@@ -28,7 +28,6 @@ class FixedPointLoop {
  public:
   // M: the L²(Ω_S0) mass matrix of the stopping test (and the relaxation's).
   FixedPointLoop(CoupledMap& H, Relaxation& relaxation, const SparseMatrix& M, double tol, int max_iterations);
-  ~FixedPointLoop() { relaxation_.project = nullptr; }  // it pointed at H's structure
   FixedPointLoop(const FixedPointLoop&) = delete;
   FixedPointLoop& operator=(const FixedPointLoop&) = delete;
 

@@ -16,10 +16,10 @@ Eigen::VectorXd initial_iterate(ElasticContactSolver& structure, const Eigen::Ve
   return structure.project(initial);
 }
 
-Eigen::VectorXd relaxed_iterate(Relaxation& relaxation, const Eigen::VectorXd& u, const Eigen::VectorXd& u_tilde,
-                                int k, IterationRecord& rec, CouplingResult& result) {
+Eigen::VectorXd relaxed_iterate(Relaxation& relaxation, const Projection& project, const Eigen::VectorXd& u,
+                                const Eigen::VectorXd& u_tilde, int k, IterationRecord& rec, CouplingResult& result) {
   const std::string phase = "the relaxation (" + relaxation.name() + ")";
-  Eigen::VectorXd next = guarded(phase, k, [&] { return relaxation.next(u, u_tilde); });
+  Eigen::VectorXd next = guarded(phase, k, [&] { return relaxation.next(u, u_tilde, project); });
   if (!next.allFinite())
     throw SolverFailure(phase + " failed at fixed-point iteration " + std::to_string(k) + ": non-finite iterate");
   rec.omega = result.history.back().omega = relaxation.omega();

@@ -19,7 +19,8 @@ Eigen::VectorXd initial_iterate(ElasticContactSolver& structure, const Eigen::Ve
 // u^{k+1} = relaxation(u^k, ũ^{k+1}) after pass k, its ω recorded in `rec` and in the
 // last history record; a SolverFailure naming the relaxation and the pass if it fails
 // or gives a non-finite iterate.
-Eigen::VectorXd relaxed_iterate(Relaxation& relaxation, const Eigen::VectorXd& u, const Eigen::VectorXd& u_tilde,
-                                int k, IterationRecord& rec, CouplingResult& result);
+// `project`: the structure step's projection onto the feasible set.
+Eigen::VectorXd relaxed_iterate(Relaxation& relaxation, const Projection& project, const Eigen::VectorXd& u,
+                                const Eigen::VectorXd& u_tilde, int k, IterationRecord& rec, CouplingResult& result);
 
 }  // namespace fsi

@@ -13,7 +13,7 @@ namespace {
 class ConstantRelaxation final : public Relaxation {
  public:
   explicit ConstantRelaxation(double omega) : omega_(omega) {}
-  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u, const Projection&) override {
     return u + omega_ * (H_u - u);  // convex combination of feasible fields: feasible
   }
   double omega() const override { return omega_; }
@@ -31,7 +31,7 @@ class AitkenRelaxation final : public Relaxation {
     omega_ = omega0_;
     previous_r_.resize(0);
   }
-  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u, const Projection&) override {
     const Eigen::VectorXd r = H_u - u;
     if (previous_r_.size() == r.size()) {
       const Eigen::VectorXd dr = r - previous_r_;
@@ -75,7 +75,7 @@ class IqnIlsRelaxation final : public Relaxation {
   IqnIlsRelaxation(const RelaxationOptions& o, const Eigen::SparseMatrix<double>& M)
       : options_(o), norm_(M) {}
 
-  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u, const Projection& project) override {
     const Eigen::VectorXd r = H_u - u;
     if (previous_r_.size() == r.size()) {
       V_.push_front(r - previous_r_);

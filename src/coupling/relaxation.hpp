@@ -17,10 +17,17 @@
 
 namespace fsi {
 
+// Maps a displacement to the nearest feasible one (A_S-norm): the structure step's
+// (StructureStep::project), given by the loop with each update.
+using Projection = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+
 class Relaxation {
  public:
   virtual ~Relaxation() = default;
-  virtual Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) = 0;
+  // u^{k+1} from u^k and H(u^k); an update that may leave the feasible set (IQN-ILS's)
+  // is projected back by `project` (empty: not projected).
+  virtual Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u,
+                               const Projection& project = {}) = 0;
   // The relaxation factor of the last step (IQN-ILS: NaN after its first step).
   virtual double omega() const = 0;
   virtual std::string name() const = 0;
@@ -32,9 +39,6 @@ class Relaxation {
   // the (V, W) columns kept for RelaxationOptions::reused_windows windows (0: dropped).
   // The steady problem has one window and never calls it.
   virtual void end_window() {}
-
-  // Maps a displacement to the nearest feasible one (A_S-norm); set by the loop.
-  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> project;
 
  protected:
   int projections_ = 0;

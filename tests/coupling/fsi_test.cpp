@@ -30,7 +30,7 @@ struct Coupled {
 class PoisonedRelaxation final : public Relaxation {
  public:
   explicit PoisonedRelaxation(int good) : good_(good) {}
-  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u, const Projection&) override {
     if (++calls_ > good_) return Eigen::VectorXd::Constant(u.size(), NAN);
     return u + 0.1 * (H_u - u);
   }
@@ -47,7 +47,7 @@ class ThrowingRelaxation final : public Relaxation {
  public:
   ThrowingRelaxation(int at, std::function<void()> thrower)
       : at_(at), thrower_(std::move(thrower)) {}
-  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u) override {
+  Eigen::VectorXd next(const Eigen::VectorXd& u, const Eigen::VectorXd& H_u, const Projection&) override {
     if (++calls_ == at_) thrower_();
     return u + 0.1 * (H_u - u);
   }

@@ -111,13 +111,13 @@ TEST(Relaxation, IqnIlsProjectsAnInfeasibleUpdateAndCountsIt) {
   const Eigen::MatrixXd A = -0.5 * Eigen::MatrixXd::Identity(n, n);
   auto relax = make_relaxation("iqn-ils", {.omega0 = 0.1}, identity(n));
   int calls = 0;
-  relax->project = [&](const Eigen::VectorXd& z) {  // feasible set: u ≤ 0.5 componentwise
+  const Projection project = [&](const Eigen::VectorXd& z) {  // feasible set: u ≤ 0.5 componentwise
     ++calls;
     return Eigen::VectorXd(z.cwiseMin(0.5));
   };
   Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);  // fixed point 2/3 > 0.5: infeasible
-  for (int k = 0; k < 6; ++k) u = relax->next(u, A * u + b);
+  for (int k = 0; k < 6; ++k) u = relax->next(u, A * u + b, project);
   EXPECT_GT(calls, 0);
   EXPECT_GT(relax->projections(), 0);
   EXPECT_LE(u.maxCoeff(), 0.5);
