@@ -60,6 +60,9 @@ class ElementTerm {
   virtual ~ElementTerm() = default;
   virtual void add(int t, const P1Triangle& T, MiniLocal& e) const = 0;
   virtual bool symmetric() const = 0;
+  // Its part of triangle t's load (Newton's right-hand side of a linearised term);
+  // none by default.
+  virtual void add_load(int /*t*/, const P1Triangle& /*T*/, ElementLoad& /*load*/) const {}
 };
 
 // The Stokes terms with the penalty κ: viscous, divergence, mass.

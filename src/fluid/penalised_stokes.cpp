@@ -55,6 +55,13 @@ void PenalisedStokes::add_term(std::shared_ptr<const ElementTerm> term) {
   ++version_;
 }
 
+void PenalisedStokes::terms_changed() {
+  strategy_->settle();
+  assembler_.forget_assembly();
+  strategy_->load_changed();
+  ++version_;
+}
+
 void PenalisedStokes::reset() {
   solved_once_ = false;
   ++version_;

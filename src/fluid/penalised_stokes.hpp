@@ -61,6 +61,9 @@ class PenalisedStokes {
   // factors unsymmetric systems (`whole` with "umfpack", "umfpack-metis" or "eigen-lu"):
   // solve() refuses the others with a SolverFailure naming them.
   void add_term(std::shared_ptr<const ElementTerm> term);
+  // The added terms' data changed (Newton's new velocity to linearise about): a new
+  // version, every triangle assembled again.
+  void terms_changed();
   bool symmetric() const { return assembler_.symmetric(); }
   // Where χ is expected to go (per triangle, as χ; empty: nowhere known), e.g. the
   // structure under its applied loads alone: the substructured solve's first near

@@ -149,6 +149,13 @@ MiniLocal StokesAssembler::local(int t, double kappa) const {
   return e;
 }
 
+ElementLoad StokesAssembler::load(int t) const {
+  if (terms_.empty()) return loads_[t];
+  ElementLoad load = loads_[t];
+  for (const auto& term : terms_) term->add_load(t, geometry_[t], load);
+  return load;
+}
+
 void StokesAssembler::add_term(std::shared_ptr<const ElementTerm> term) {
   symmetric_ = symmetric_ && term->symmetric();
   terms_.push_back(std::move(term));
@@ -159,7 +166,7 @@ void StokesAssembler::add_term(std::shared_ptr<const ElementTerm> term) {
 void StokesAssembler::add_element(int t, double kappa, double sign) {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
-  const CondensedElement ce = condense(local(t, kappa), loads_[t]);
+  const CondensedElement ce = condense(local(t, kappa), load(t));
   const int* slots = &slot_[81 * static_cast<std::size_t>(t)];
   double* values = K_.valuePtr();
   for (int i = 0; i < 9; ++i) {
@@ -213,7 +220,7 @@ std::array<int, 9> StokesAssembler::element_dofs(int t) const {
 ElementSystem StokesAssembler::element_system(int t, double kappa) const {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
-  const CondensedElement ce = condense(local(t, kappa), loads_[t]);
+  const CondensedElement ce = condense(local(t, kappa), load(t));
   ElementSystem e{element_dofs(t), ce.K, ce.F};
   for (int j = 0; j < 9; ++j)
     if (e.dof[j] < 0)
@@ -257,7 +264,7 @@ void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) co
   const auto& tri = mesh_.triangles[t];
   Vector9d local;
   for (int k = 0; k < 3; ++k) local[k] = out.v1[tri[k]], local[3 + k] = out.v2[tri[k]], local[6 + k] = out.p[tri[k]];
-  out.bubble.col(t) = bb.A_bb_inv * (loads_[t].F_b - bb.E * local);
+  out.bubble.col(t) = bb.A_bb_inv * (load(t).F_b - bb.E * local);
 }
 
 // The order is needed only by the first far-field factorisation, after the solver's

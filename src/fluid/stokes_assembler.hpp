@@ -102,8 +102,10 @@ class StokesAssembler {
  private:
   void build_whole_pattern();
   void add_element(int t, double kappa, double sign);
-  // Triangle t's local system with the penalty κ: the Stokes terms and the added ones.
+  // Triangle t's local system with the penalty κ: the Stokes terms and the added ones;
+  // its load: the body force's and the added terms'.
   MiniLocal local(int t, double kappa) const;
+  ElementLoad load(int t) const;
 
   const Mesh& mesh_;
   double mu_;

@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "fem/quadrature.hpp"
+#include "fluid/convection.hpp"
 #include "fluid/mini_element.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "io/case.hpp"
@@ -20,26 +21,7 @@ namespace {
 
 const P1Triangle kT(Point(0.1, -0.2), Point(0.7, 0.05), Point(0.25, 0.6));
 
-// The 8 velocity basis functions of the mini space at λ: λ_a e_c (index 3c + a), then
-// b e_d (index 6 + d); values and gradients (row c of grad = ∇ of component c).
-struct Basis {
-  std::array<Eigen::Vector2d, 8> value;
-  std::array<Eigen::Matrix2d, 8> grad;
-};
-Basis basis(const P1Triangle& T, const Eigen::Vector3d& l) {
-  Basis B;
-  for (int i = 0; i < 8; ++i) B.value[i].setZero(), B.grad[i].setZero();
-  const Eigen::Vector2d gb = bubble_gradient(T, l);
-  for (int c = 0; c < 2; ++c) {
-    for (int a = 0; a < 3; ++a) {
-      B.value[3 * c + a][c] = l[a];
-      B.grad[3 * c + a].row(c) = T.grad.row(a);
-    }
-    B.value[6 + c][c] = bubble_value(l);
-    B.grad[6 + c].row(c) = gb.transpose();
-  }
-  return B;
-}
+using Basis = MiniVelocityBasis;  // the 8 velocity basis functions at a point (fluid/convection.hpp)
 
 // The 8×8 velocity matrix of a local system: [M_VV  E_col_V; E_row_V  A_bb].
 Eigen::Matrix<double, 8, 8> velocity_block(const MiniLocal& e) {
@@ -58,7 +40,7 @@ Eigen::Matrix<double, 8, 8> by_quadrature(const P1Triangle& T, Form&& form) {
   Eigen::Matrix<double, 8, 8> out = Eigen::Matrix<double, 8, 8>::Zero();
   const TriangleRule rule = triangle_rule(6);
   for (std::size_t q = 0; q < rule.w.size(); ++q) {
-    const Basis B = basis(T, rule.lambda[q]);
+    const Basis B = mini_velocity_basis(T, rule.lambda[q]);
     for (int i = 0; i < 8; ++i)
       for (int j = 0; j < 8; ++j) out(i, j) += rule.w[q] * T.area * form(B, i, j);
   }
