@@ -19,6 +19,16 @@ void add_viscous(const P1Triangle& T, double mu, MiniLocal& e) {
     for (int d = 0; d < 2; ++d) e.A_bb(c, d) += mu * ((c == d ? gg11 + gg22 : 0.0) + bubble::grad_grad(T, d, c));
 }
 
+void add_viscous_gradient(const P1Triangle& T, double mu, MiniLocal& e) {
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const double gg = T.area * mu * T.grad.row(a).dot(T.grad.row(b));  // μ ∫ ∇λ_a·∇λ_b
+      for (int c = 0; c < 2; ++c) e.M(3 * c + a, 3 * c + b) += gg;
+    }
+  const double bb = mu * (bubble::grad_grad(T, 0, 0) + bubble::grad_grad(T, 1, 1));  // μ ∫ ∇b·∇b
+  for (int c = 0; c < 2; ++c) e.A_bb(c, c) += bb;
+}
+
 void add_divergence(const P1Triangle& T, MiniLocal& e) {
   for (int k = 0; k < 3; ++k)
     for (int a = 0; a < 3; ++a)

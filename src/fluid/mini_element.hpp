@@ -47,6 +47,11 @@ struct MiniLocal {
 // ∫ 2μ ε(v):ε(w). The bubble couples to no P1 velocity here (∇λ_a is constant on T
 // and ∫_T ∇b = 0).
 void add_viscous(const P1Triangle& T, double mu, MiniLocal& e);
+// μ ∫ ∇v : ∇w, the gradient form (SPEC §10 fluid.viscous_form = "gradient": the DFG
+// benchmark's do-nothing outflow is this form's natural condition). Equal to the
+// symmetric form's ∫ 2μ ε:ε for divergence-free fields with v = 0 on the boundary,
+// not at an outflow. The bubble couples to no P1 velocity here either.
+void add_viscous_gradient(const P1Triangle& T, double mu, MiniLocal& e);
 // −∫ (div w) p − ∫ (div v) q (with −∫ div(b e_d) q = ∫ b ∂_d q, b = 0 on ∂T).
 void add_divergence(const P1Triangle& T, MiniLocal& e);
 // κ ∫ v·w: the penalty χ_T/ε (eq. 25); ρ/Δt for a time step.

@@ -90,6 +90,18 @@ TEST(FluidOperator, TheViscousIntegratorIsTwoMuEpsilonEpsilon) {
   EXPECT_LT((velocity_block(e) - brute).cwiseAbs().maxCoeff(), 1e-12 * brute.cwiseAbs().maxCoeff());
 }
 
+TEST(FluidOperator, TheGradientFormIsMuGradGrad) {
+  const double mu = 0.35;
+  MiniLocal e;
+  add_viscous_gradient(kT, mu, e);
+  const Eigen::Matrix<double, 8, 8> brute = by_quadrature(
+      kT, [mu](const Basis& B, int i, int j) { return mu * B.grad[i].cwiseProduct(B.grad[j]).sum(); });
+  EXPECT_LT((velocity_block(e) - brute).cwiseAbs().maxCoeff(), 1e-12 * brute.cwiseAbs().maxCoeff());
+  MiniLocal symmetric;
+  add_viscous(kT, mu, symmetric);  // the two forms differ on a single element (no boundary condition)
+  EXPECT_GT((symmetric.M - e.M).norm(), 1e-3 * e.M.norm());
+}
+
 TEST(FluidOperator, TheStokesTermsAreSymmetricAndAConvectionTermIsNot) {
   MiniLocal e = mini_local(kT, 0.35, 12.0);
   EXPECT_TRUE(e.symmetric);
