@@ -41,25 +41,27 @@ void PenalisedStokes::set_eps(double eps) {
   }
 }
 
-void PenalisedStokes::set_body_force(const VectorField& f) {
-  strategy_->settle();  // a deferred expansion's bubbles need the old loads
-  assembler_.set_body_force(f);
+// A change of the operator or of the loads beyond χ and ε: a deferred expansion is
+// finished first (its bubbles belong to the old problem), the substructured solve's
+// region dropped (its far field condensed the old operator and load), a new version.
+template <class Change>
+void PenalisedStokes::change_problem(Change&& change) {
+  strategy_->settle();
+  change();
   strategy_->load_changed();
   ++version_;
+}
+
+void PenalisedStokes::set_body_force(const VectorField& f) {
+  change_problem([&] { assembler_.set_body_force(f); });
 }
 
 void PenalisedStokes::add_term(std::shared_ptr<const ElementTerm> term) {
-  strategy_->settle();  // a deferred expansion's bubbles belong to the old operator
-  assembler_.add_term(std::move(term));
-  strategy_->load_changed();  // the far field's factors hold the old operator
-  ++version_;
+  change_problem([&] { assembler_.add_term(std::move(term)); });
 }
 
 void PenalisedStokes::terms_changed() {
-  strategy_->settle();
-  assembler_.forget_assembly();
-  strategy_->load_changed();
-  ++version_;
+  change_problem([&] { assembler_.forget_assembly(); });
 }
 
 void PenalisedStokes::reset() {

@@ -106,6 +106,9 @@ class PenalisedStokes {
   const Eigen::VectorXd& rhs() const { return assembler_.rhs(); }
 
  private:
+  template <class Change>
+  void change_problem(Change&& change);
+
   StokesAssembler assembler_;
   std::string solver_;
   FluidFactorization factorization_ = FluidFactorization::whole;

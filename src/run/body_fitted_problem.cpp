@@ -118,8 +118,7 @@ class BodyFittedProblem : public FluidStructureProblem {
     j["fluid"] = fluid_json(result_, last_);
     r.report = report(m);
     if (!result_.failure.empty()) r.report += " Failed: " + result_.failure + ".";
-    const std::string warning = convergence_warning(result_, c_.coupling.tol);
-    if (!warning.empty()) r.report += " Warning: " + warning + ".";
+    if (!m.convergence_warning.empty()) r.report += " Warning: " + m.convergence_warning + ".";
   }
 
   void write(RunOutputs& out) override {
