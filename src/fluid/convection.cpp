@@ -51,7 +51,8 @@ void NewtonConvection::add(int t, const P1Triangle& T, MiniLocal& e) const {
     const FieldAt w = field_at(B, c);
     const double dx = rho_ * rule.w[q] * T.area;
     for (int j = 0; j < 8; ++j) {
-      const Eigen::Vector2d Dj = B.grad[j] * w.value + w.grad * B.value[j];  // (w·∇)φ_j + (φ_j·∇)w
+      Eigen::Vector2d Dj = B.grad[j] * w.value;  // (w·∇)φ_j
+      if (!picard_) Dj += w.grad * B.value[j];    // + (φ_j·∇)w
       for (int i = 0; i < 8; ++i) J(i, j) += dx * B.value[i].dot(Dj);
     }
   }
@@ -63,6 +64,7 @@ void NewtonConvection::add(int t, const P1Triangle& T, MiniLocal& e) const {
 }
 
 void NewtonConvection::add_load(int t, const P1Triangle& T, ElementLoad& load) const {
+  if (picard_) return;  // Oseen's system has the Stokes load alone
   const Eigen::Matrix<double, 8, 1> c = local_coefficients(mesh_, w_, t);
   const TriangleRule rule = triangle_rule(8);
   for (std::size_t q = 0; q < rule.w.size(); ++q) {

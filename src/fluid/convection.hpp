@@ -6,7 +6,8 @@
 // so that K(w) v_new = F + ρ∫(w·∇)w·φ is the Newton step from w (the Stokes terms
 // linear), its fixed point the discrete Navier–Stokes solution. The integrals are
 // exact: w and φ are of degree 3 (the bubble), ∇ of degree 2, so the rule has degree 8.
-// The Newton iteration itself and the case keys are the Navier–Stokes issue's (29).
+// Picard's linearisation (Oseen's: ρ∫(w·∇)δ·φ, no load) shares the fixed point and
+// converges from farther away, linearly: NewtonSolve falls back on it.
 #pragma once
 
 #include "fluid/mini_element.hpp"
@@ -23,9 +24,13 @@ class NewtonConvection final : public ElementTerm {
   void add(int t, const P1Triangle& T, MiniLocal& e) const override;
   void add_load(int t, const P1Triangle& T, ElementLoad& load) const override;
   bool symmetric() const override { return false; }
+  // Picard's (Oseen's) linearisation instead of Newton's, until set back.
+  void set_picard(bool picard) { picard_ = picard; }
+  bool picard() const { return picard_; }
 
  private:
   double rho_;
+  bool picard_ = false;
   const Mesh& mesh_;
   const FluidSolution& w_;
 };

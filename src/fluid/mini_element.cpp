@@ -63,9 +63,12 @@ void add_mass(const P1Triangle& T, double kappa, MiniLocal& e) {
     }
 }
 
-MiniLocal mini_local(const P1Triangle& T, double mu, double kappa) {
+MiniLocal mini_local(const P1Triangle& T, double mu, double kappa, ViscousForm form) {
   MiniLocal e;
-  add_viscous(T, mu, e);
+  if (form == ViscousForm::symmetric)
+    add_viscous(T, mu, e);
+  else
+    add_viscous_gradient(T, mu, e);
   add_mass(T, kappa, e);
   add_divergence(T, e);
   return e;

@@ -70,8 +70,13 @@ class ElementTerm {
   virtual void add_load(int /*t*/, const P1Triangle& /*T*/, ElementLoad& /*load*/) const {}
 };
 
-// The Stokes terms with the penalty κ: viscous, divergence, mass.
-MiniLocal mini_local(const P1Triangle& T, double mu, double kappa);
+// Which bilinear form the viscous term takes (SPEC §10 fluid.viscous_form): the
+// symmetric 2μ ε:ε of the paper (traction-free outflow σn = 0) or the gradient μ∇:∇
+// (the "do-nothing" outflow μ∂_n v − p n = 0 of the DFG benchmarks).
+enum class ViscousForm { symmetric, gradient };
+
+// The Stokes terms with the penalty κ: viscous (in `form`), divergence, mass.
+MiniLocal mini_local(const P1Triangle& T, double mu, double kappa, ViscousForm form = ViscousForm::symmetric);
 
 // The bubble's own rows: A_bb β + E [V; P] = F_b.
 struct BubbleBlock {

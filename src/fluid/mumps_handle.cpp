@@ -82,10 +82,10 @@ std::string mumps_error_words(int info1, int info2) {
   return text.empty() ? codes : text + " " + codes;
 }
 
-MumpsHandle::MumpsHandle(std::string who) : who_(std::move(who)) {
+MumpsHandle::MumpsHandle(std::string who, int sym) : who_(std::move(who)) {
   id_.comm_fortran = -987654;  // MPI_COMM_WORLD of the sequential stub library
   id_.par = 1;
-  id_.sym = 2;
+  id_.sym = sym;
   call(-1, "initialisation");
   initialised_ = true;
   icntl(1) = icntl(2) = icntl(3) = -1;  // no output

@@ -1,5 +1,5 @@
-// One sequential MUMPS instance for a symmetric indefinite matrix (SYM = 2: LDLᵀ with
-// threshold 1×1/2×2 pivoting): its set-up and release, the calls and their errors,
+// One sequential MUMPS instance, by default for a symmetric indefinite matrix (SYM = 2:
+// LDLᵀ with threshold 1×1/2×2 pivoting; SYM = 0, LU, for Navier–Stokes): its set-up and release, the calls and their errors,
 // and the numeric factorisation that grows the workspace when pivoting needs more.
 // Shared by MumpsSolver (src/fluid/sparse_solver.cpp) and MumpsSchur.
 #pragma once
@@ -19,8 +19,9 @@ std::string mumps_error_words(int info1, int info2);
 
 class MumpsHandle {
  public:
-  // `who` starts every error message, e.g. "mumps-metis: MUMPS ".
-  explicit MumpsHandle(std::string who);
+  // `who` starts every error message, e.g. "mumps-metis: MUMPS ". sym: MUMPS's SYM,
+  // 2 symmetric indefinite (LDLᵀ, the lower triangle given), 0 unsymmetric (LU, all entries).
+  explicit MumpsHandle(std::string who, int sym = 2);
   ~MumpsHandle();
   MumpsHandle(const MumpsHandle&) = delete;
   MumpsHandle& operator=(const MumpsHandle&) = delete;

@@ -19,10 +19,25 @@ PenalisedStokes::PenalisedStokes(const Mesh& mesh, double mu, double eps, const 
 void PenalisedStokes::set_factorization(FluidFactorization f, double far_factor_budget_mb) {
   if (solved_once_) throw std::logic_error("PenalisedStokes::set_factorization after a solve");
   factorization_ = f;
+  newton_ = nullptr;
   if (f == FluidFactorization::schur)
     strategy_ = std::make_unique<SubstructuredSolve>(assembler_, solver_, timing_, solution_, far_factor_budget_mb);
   else
     strategy_ = std::make_unique<WholeSolve>(assembler_, solver_, timing_, solution_);
+}
+
+void PenalisedStokes::set_viscous_form(ViscousForm form) {
+  change_problem([&] { assembler_.set_viscous_form(form); });
+}
+
+void PenalisedStokes::set_navier_stokes(const NewtonOptions& options) {
+  if (solved_once_) throw std::logic_error("PenalisedStokes::set_navier_stokes after a solve");
+  if (factorization_ != FluidFactorization::whole)
+    throw std::invalid_argument("Navier–Stokes is solved on the whole factorisation only");
+  auto newton = std::make_unique<NewtonSolve>(assembler_, solver_, timing_, solution_, options);
+  newton_ = newton.get();
+  strategy_ = std::move(newton);
+  ++version_;
 }
 
 void PenalisedStokes::set_chi(const Eigen::VectorXd& chi) {

@@ -18,6 +18,7 @@
 #include <memory>
 #include <string>
 
+#include "fluid/newton_solve.hpp"
 #include "fluid/sparse_solver.hpp"
 #include "fluid/stokes_assembler.hpp"
 #include "fluid/stokes_strategy.hpp"
@@ -56,6 +57,16 @@ class PenalisedStokes {
   void set_eps(double eps);
   // A new body force f_F (the same χ may follow: the next solve solves again).
   void set_body_force(const VectorField& f);
+  // The viscous term's form (SPEC §10 fluid.viscous_form): a new version.
+  void set_viscous_form(ViscousForm form);
+  ViscousForm viscous_form() const { return assembler_.viscous_form(); }
+  // Steady Navier–Stokes (SPEC §10): the convection ρ(v·∇)v added and every solve
+  // Newton's iteration (NewtonSolve), on the whole factorisation with this object's
+  // solver, which must factor unsymmetric matrices. Before the first solve; the
+  // `schur` factorisation is refused (std::invalid_argument).
+  void set_navier_stokes(const NewtonOptions& options);
+  // Newton's report (null for Stokes).
+  const FluidNewtonReport* newton() const { return newton_ ? &newton_->report() : nullptr; }
   // A further term of the operator (mini_element.hpp ElementTerm: convection for
   // Navier–Stokes); a new version. An unsymmetric term needs a solver path that
   // factors unsymmetric systems (`whole` with "umfpack", "umfpack-metis" or "eigen-lu"):
@@ -113,6 +124,7 @@ class PenalisedStokes {
   std::string solver_;
   FluidFactorization factorization_ = FluidFactorization::whole;
   std::unique_ptr<StokesSolveStrategy> strategy_;
+  const NewtonSolve* newton_ = nullptr;  // the strategy, for Navier–Stokes
   Eigen::VectorXd chi_;
   double eps_;
   // The problem's version: any change of χ, ε or the load makes a new one; a solution

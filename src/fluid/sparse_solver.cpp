@@ -229,28 +229,33 @@ namespace {
 
 // MUMPS, sequential, symmetric indefinite (SYM = 2): multifrontal LDLᵀ with
 // threshold 1×1/2×2 pivoting and scaling computed at each factorisation, on the
-// lower triangle of A in coordinate form.
+// lower triangle of A in coordinate form; or unsymmetric (SYM = 0: LU with threshold
+// partial pivoting, every entry given), for Navier–Stokes's Jacobian.
 class MumpsSolver final : public SparseDirectSolver {
  public:
   enum class Ordering { metis, pord, amd, given };
   // Ordering::given: `order` lists the unknowns in elimination order.
-  MumpsSolver(std::string name, Ordering ordering, std::vector<int> order = {})
-      : name_(std::move(name)), ordering_(ordering), order_(std::move(order)), mumps_(name_ + ": MUMPS ") {
-    icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
+  MumpsSolver(std::string name, Ordering ordering, std::vector<int> order = {}, bool symmetric = true)
+      : name_(std::move(name)),
+        ordering_(ordering),
+        order_(std::move(order)),
+        symmetric_(symmetric),
+        mumps_(name_ + ": MUMPS ", symmetric ? 2 : 0) {
+    if (symmetric) icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
     icntl(7) = ordering == Ordering::metis || ordering == Ordering::given ? 1 : ordering == Ordering::pord ? 4 : 0;
   }
   std::string name() const override { return name_; }
   FactorStatistics statistics() const override {
     return {static_cast<double>(id_.infog[28]), id_.rinfog[2]};  // INFOG(29), RINFOG(3)
   }
-  bool needs_symmetry() const override { return true; }  // SYM = 2 reads the lower triangle
+  bool needs_symmetry() const override { return symmetric_; }  // SYM = 2 reads the lower triangle
 
  protected:
   void analyze_pattern(const SparseMatrix& A) override {
     rows_.clear(), columns_.clear(), slots_.clear();
     for (int col = 0; col < A.cols(); ++col)
       for (int k = A.outerIndexPtr()[col]; k < A.outerIndexPtr()[col + 1]; ++k)
-        if (A.innerIndexPtr()[k] >= col) {
+        if (!symmetric_ || A.innerIndexPtr()[k] >= col) {
           rows_.push_back(A.innerIndexPtr()[k] + 1);
           columns_.push_back(col + 1);
           slots_.push_back(k);
@@ -295,10 +300,11 @@ class MumpsSolver final : public SparseDirectSolver {
   std::string name_;
   Ordering ordering_;
   std::vector<int> order_;  // Ordering::given: the unknowns in elimination order
+  bool symmetric_;
   MumpsHandle mumps_;
   DMUMPS_STRUC_C& id_ = mumps_.id();
   std::vector<MUMPS_INT> rows_, columns_, position_;
-  std::vector<int> slots_;  // lower-triangle entry k is A.valuePtr()[slots_[k]]
+  std::vector<int> slots_;  // (lower-triangle) entry k is A.valuePtr()[slots_[k]]
   std::vector<double> values_;
 };
 
@@ -325,7 +331,7 @@ std::unique_ptr<SparseDirectSolver> make_cholmod_ldlt() {
 const std::vector<std::string>& sparse_solver_names() {
   static const std::vector<std::string> names = {"mumps-metis", "mumps-pord",    "mumps-amd",
                                                  "umfpack",     "umfpack-metis", "cholmod-ldlt",
-                                                 "eigen-ldlt",  "eigen-lu"};
+                                                 "eigen-ldlt",  "eigen-lu",      "mumps-lu"};
   return names;
 }
 
@@ -338,6 +344,7 @@ std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) 
   if (name == "mumps-metis") return std::make_unique<MumpsSolver>(name, Ordering::metis);
   if (name == "mumps-pord") return std::make_unique<MumpsSolver>(name, Ordering::pord);
   if (name == "mumps-amd") return std::make_unique<MumpsSolver>(name, Ordering::amd);
+  if (name == "mumps-lu") return std::make_unique<MumpsSolver>(name, Ordering::metis, std::vector<int>{}, false);
   if (name == "umfpack") return std::make_unique<UmfpackSolver>(name);
   if (name == "umfpack-metis") return make_umfpack_metis();
   if (name == "cholmod-ldlt") return make_cholmod_ldlt();

@@ -71,7 +71,8 @@ inline const char* const kDefaultSparseSolver = "mumps-metis";
 // SimplicialLDLT (AMD); "eigen-lu": Eigen's SparseLU (COLAMD). The LDLᵀ without
 // pivoting rely on the system being nearly quasi-definite. Symmetric only (needs_symmetry):
 // the MUMPS, CHOLMOD and Eigen LDLᵀ ones; "umfpack", "umfpack-metis" (LU, its
-// symmetric strategy an ordering choice) and "eigen-lu" factor any matrix.
+// symmetric strategy an ordering choice), "eigen-lu" and "mumps-lu" (MUMPS unsymmetric,
+// SYM = 0, METIS on the symmetric pattern) factor any matrix.
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name);
 
 // MUMPS as "mumps-metis" but with the elimination order given (order[k] = the k-th

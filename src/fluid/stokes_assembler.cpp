@@ -144,7 +144,7 @@ void StokesAssembler::set_body_force(const VectorField& f) {
 }
 
 MiniLocal StokesAssembler::local(int t, double kappa) const {
-  MiniLocal e = mini_local(geometry_[t], mu_, kappa);
+  MiniLocal e = mini_local(geometry_[t], mu_, kappa, form_);
   for (const auto& term : terms_) term->add(t, geometry_[t], e);
   return e;
 }
@@ -154,6 +154,11 @@ ElementLoad StokesAssembler::load(int t) const {
   ElementLoad load = loads_[t];
   for (const auto& term : terms_) term->add_load(t, geometry_[t], load);
   return load;
+}
+
+void StokesAssembler::set_viscous_form(ViscousForm form) {
+  form_ = form;
+  assembled_ = false;
 }
 
 void StokesAssembler::add_term(std::shared_ptr<const ElementTerm> term) {
@@ -247,6 +252,16 @@ void StokesAssembler::prescribed_fields(FluidSolution& out) const {
   out.v2 = z_fixed_.segment(nv, nv);
   out.p = z_fixed_.segment(2 * nv, nv);
   out.bubble = Eigen::Matrix2Xd::Zero(2, mesh_.num_triangles());
+}
+
+Eigen::VectorXd StokesAssembler::reduced(const FluidSolution& s) const {
+  const int nv = mesh_.num_vertices();
+  Eigen::VectorXd x(static_cast<Eigen::Index>(free_.size()));
+  for (std::size_t k = 0; k < free_.size(); ++k) {
+    const int d = free_[k];
+    x[static_cast<Eigen::Index>(k)] = (d < nv ? s.v1 : d < 2 * nv ? s.v2 : s.p)[d % nv];
+  }
+  return x;
 }
 
 void StokesAssembler::scatter(const std::vector<int>& reduced, const Eigen::VectorXd& x_part, FluidSolution& out) const {

@@ -54,6 +54,10 @@ class StokesAssembler {
 
   const Mesh& mesh() const { return mesh_; }
   double mu() const { return mu_; }
+  // The viscous term's form (SPEC §10 fluid.viscous_form; symmetric by default); the
+  // next assemble() assembles everything.
+  void set_viscous_form(ViscousForm form);
+  ViscousForm viscous_form() const { return form_; }
   // A new body force f (its element loads); the next assemble() assembles everything.
   void set_body_force(const VectorField& f);
   // A further term of every element (mini_element.hpp ElementTerm: convection); the
@@ -88,6 +92,8 @@ class StokesAssembler {
   void fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps, FluidSolution& out) const;
   // The prescribed values and zero elsewhere (a solution about to be filled in part).
   void prescribed_fields(FluidSolution& out) const;
+  // The reduced vector (free dofs) of a solution's vertex values.
+  Eigen::VectorXd reduced(const FluidSolution& s) const;
   // Writes the reduced values x_part of unknowns `reduced[k]` into `out`.
   void scatter(const std::vector<int>& reduced, const Eigen::VectorXd& x_part, FluidSolution& out) const;
   // Triangle t's bubble coefficients from its vertex values in `out` (penalty κ).
@@ -109,6 +115,7 @@ class StokesAssembler {
 
   const Mesh& mesh_;
   double mu_;
+  ViscousForm form_ = ViscousForm::symmetric;
   std::vector<ElementLoad> loads_;
   std::vector<std::shared_ptr<const ElementTerm>> terms_;  // beyond Stokes (add_term)
   bool symmetric_ = true;

@@ -1,11 +1,12 @@
 #include "fluid/stokes_residual.hpp"
 
 #include "fem/quadrature.hpp"
+#include "fluid/convection.hpp"
 #include "fluid/mini_element.hpp"
 
 namespace fsi {
 
-Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
+Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, const MomentumModel& model,
                                    const std::function<Point(const Point&)>& f,
                                    const FluidSolution& s, const std::vector<int>& vertices,
                                    const Eigen::VectorXd& kappa) {
@@ -19,7 +20,14 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
     if (column[tri[0]] < 0 && column[tri[1]] < 0 && column[tri[2]] < 0) continue;
     const P1Triangle T(mesh, t);
     const double penalty = kappa.size() ? kappa[t] : 0.0;
-    const CondensedElement e = condensed_mini_element(T, mu, penalty, element_load(T, f, rule));
+    MiniLocal local = mini_local(T, model.mu, penalty, model.form);
+    ElementLoad load = element_load(T, f, rule);
+    if (model.rho != 0) {  // Newton's element at v_h: J v_h − (F + N(v_h)) = the residual
+      const NewtonConvection convection(model.rho, mesh, s);
+      convection.add(t, T, local);
+      convection.add_load(t, T, load);
+    }
+    const CondensedElement e = condense(local, load);
     Vector9d z;  // [v1 at the 3 vertices, v2, p]
     for (int a = 0; a < 3; ++a)
       z[a] = s.v1[tri[a]], z[3 + a] = s.v2[tri[a]], z[6 + a] = s.p[tri[a]];
@@ -30,10 +38,10 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu,
   return R;
 }
 
-Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,
+Point hole_force(const Mesh& mesh, const MomentumModel& model, const Point& f_F, const FluidSolution& s, int label,
                  const Eigen::VectorXd& kappa) {
   const Eigen::Matrix2Xd R =
-      momentum_residual(mesh, mu, [f_F](const Point&) { return f_F; }, s, mesh.vertices_on(label), kappa);
+      momentum_residual(mesh, model, [f_F](const Point&) { return f_F; }, s, mesh.vertices_on(label), kappa);
   return -R.rowwise().sum();
 }
 

@@ -166,13 +166,35 @@ void read_obstacle(const toml::table& root, const Origin& origin, Case& c, std::
   s.reject_unknown();
 }
 
+// SPEC §10's keys: the model, its density and Newton's controls, the viscous form.
+void read_fluid_model(Section& s, const Origin& origin, FluidParams& p) {
+  const bool schur_given = s.has("factorization") && p.factorization == "schur";
+  p.model = s.choice("model", p.model, {"stokes", "navier-stokes"});
+  p.rho = s.number("rho", p.rho, {1e-30, 1e30, true, true});
+  p.newton_tol = s.number("newton_tol", p.newton_tol, {1e-15, 1e-2, true, true});
+  p.newton_max_steps = s.integer("newton_max_steps", p.newton_max_steps, 1, 1000);
+  p.viscous_form = s.choice("viscous_form", p.viscous_form, {"symmetric", "gradient"});
+  if (!p.navier_stokes()) return;
+  if (p.method == "body-fitted")
+    fail(origin, "fluid.model", "= \"navier-stokes\" is solved on the penalised fictitious domain only",
+         "\"stokes\" with fluid.method = \"body-fitted\"");
+  if (p.rho == 0)
+    fail(origin, "fluid.rho", "is required with fluid.model = \"navier-stokes\"", "a density in [1e-30, 1e30] kg/m³");
+  // Newton's Jacobian is unsymmetric and changes everywhere at every step: the far
+  // field's Schur complement (symmetric, kept for the run) does not apply.
+  if (schur_given)
+    fail(origin, "fluid.factorization", "= \"schur\" factors symmetric systems only, and fluid.model = "
+         "\"navier-stokes\" is not one", "\"whole\" (the default with navier-stokes)");
+  p.factorization = "whole";
+}
+
 void read_fluid(const toml::table* fluid, const Origin& origin, const std::string& case_path, Case& c,
                 std::vector<std::string>* known) {
   Section s(fluid, "fluid", origin, known);
   FluidParams p;
   p.L1 = s.number("L1", p.L1, kSize);
   p.H1 = s.number("H1", p.H1, kSize);
-  p.H2 = s.number("H2", p.H2, kSize);
+  p.H2 = s.number("H2", p.H2, {0, kMaxMagnitude, true, true});  // 0: the box starts at y = 0 (SPEC §10, DFG)
   p.mu = s.number("mu", p.mu, kSize);
   p.f = s.vector2("f", p.f);
   p.Vmax = s.number("Vmax", p.Vmax, kSigned);
@@ -190,6 +212,7 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
          "0 (no band) or [1e-30, fluid.h = " + shortest(p.h) + "]");
   s.band("band", p.band, p.band_box);
   p.method = s.choice("method", p.method, {"penalised", "body-fitted"});
+  read_fluid_model(s, origin, p);
   s.reject_unknown();
   c.fluid = p;
 }
@@ -405,7 +428,10 @@ std::string to_toml(const Case& c) {
     const auto& f = *c.fluid;
     toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},
                    {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
-                   {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method}};
+                   {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method},
+                   {"model", f.model}, {"viscous_form", f.viscous_form}, {"newton_tol", f.newton_tol},
+                   {"newton_max_steps", f.newton_max_steps}};
+    if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given
     if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
     else ft.insert("band", f.band);
     if (!f.mesh.empty()) ft.insert("mesh", f.mesh);

@@ -86,6 +86,16 @@ struct FluidParams {
   // deformed structure, remeshed each fixed-point pass, no-slip on the structure and
   // its traction as the load: an independent check for configurations without contact.
   std::string method = "penalised";
+  // SPEC §10: "stokes" (the paper's creeping flow) or "navier-stokes", adding ρ(v·∇)v
+  // with the density rho (kg/m³; required then), solved by Newton's method to the
+  // relative residual newton_tol in at most newton_max_steps steps. The viscous term
+  // in the symmetric form 2μ ε:ε or the gradient form μ∇:∇ (the DFG benchmarks').
+  std::string model = "stokes";
+  double rho = 0;  // 0: not given
+  double newton_tol = 1e-10;
+  int newton_max_steps = 30;
+  std::string viscous_form = "symmetric";
+  bool navier_stokes() const { return model == "navier-stokes"; }
   double size_near() const { return h_near > 0 ? h_near : h; }  // the size at the structure
 };
 

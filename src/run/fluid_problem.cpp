@@ -46,16 +46,24 @@ class FluidProblem final : public Problem {
     f_ = in_phase(times, "fluid", [&] { return &cache_.fluid(c_); });
   }
 
+  // A failed solve is kept: summary.json then also holds what the fluid solver did
+  // (Newton's residual history, SPEC §10).
   void solve(PhaseTimes& times) override {
     ScopedPhase phase(times, "fluid");
-    fluid_ = &solve_fluid_once(*f_->stokes, Eigen::VectorXd::Zero(f_->mesh->num_triangles()));  // χ = 0: no structure
+    try {
+      fluid_ = &solve_fluid_once(*f_->stokes, Eigen::VectorXd::Zero(f_->mesh->num_triangles()));  // χ = 0: no structure
+    } catch (const SolverFailure& e) {
+      failure_ = e.what();
+    }
   }
 
   void measure(RunResult& r) override {
     RunMeasures& m = r.measures;
     m.fluid_mesh = stats_;
-    m.converged = true;
-    m.status = "converged";
+    m.converged = failure_.empty();
+    m.status = failure_.empty() ? "converged" : "failed";
+    m.failure = failure_;
+    if (!failure_.empty()) r.exit_status = 1, r.failure = failure_;
   }
 
   void summarise(RunResult& r) override {
@@ -65,10 +73,12 @@ class FluidProblem final : public Problem {
     add_measures(j, r.measures);
     j["obstacles"] = obstacle_forces_json(c_, *f_);
     j["fluid"] = fluid_json(*f_->stokes);
-    r.report = fluid_report(c_, *f_->stokes, stats_, j["obstacles"]);
+    r.report = failure_.empty() ? fluid_report(c_, *f_->stokes, stats_, j["obstacles"])
+                                : c_.name + ": failed: " + failure_;
   }
 
   void write(RunOutputs& out) override {
+    if (!fluid_) return write_case_toml(out, c_);
     if (c_.output.vtu)
       out.write("fluid.vtu", [&](const std::string& p) {
         write_fluid_vtu(p, c_, *f_->mesh, *fluid_, f_->stokes->last_solution_chi());
@@ -88,6 +98,7 @@ class FluidProblem final : public Problem {
   MeshStatistics stats_;
   FluidSetup* f_ = nullptr;
   const FluidSolution* fluid_ = nullptr;
+  std::string failure_;
 };
 
 }  // namespace

@@ -104,10 +104,21 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
       f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur;
   s.stokes = std::make_unique<PenalisedStokes>(
       *s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; }, box_boundary_conditions(*s.mesh, f),
-      kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
+      f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
+  set_fluid_model(*s.stokes, f);
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
   return s;
+}
+
+void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f) {
+  if (f.viscous_form == "gradient") stokes.set_viscous_form(ViscousForm::gradient);
+  if (f.navier_stokes()) stokes.set_navier_stokes({f.rho, f.newton_tol, f.newton_max_steps});
+}
+
+MomentumModel momentum_model(const FluidParams& f) {
+  return {f.mu, f.viscous_form == "gradient" ? ViscousForm::gradient : ViscousForm::symmetric,
+          f.navier_stokes() ? f.rho : 0.0};
 }
 
 const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::VectorXd& chi) {
@@ -124,6 +135,19 @@ const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::Vect
   return v;
 }
 
+// Newton's iterations (SPEC §10): the run's totals, the last solve's residual history.
+Json newton_json(const FluidNewtonReport& n) {
+  return {{"solves", n.solves},
+          {"steps", n.total_steps},
+          {"picard_steps", n.total_picard_steps},
+          {"last_steps", n.steps},
+          {"last_damped_steps", n.damped},
+          {"last_picard_steps", n.picard_steps},
+          {"last_rejected_steps", n.rejected},
+          {"last_residuals", n.residuals},
+          {"max_final_residual", n.max_final_residual}};
+}
+
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
   Json j = {{"method", "penalised"},  // fluid.method (run/body_fitted_problem.cpp writes the other)
@@ -138,6 +162,7 @@ Json fluid_json(const PenalisedStokes& stokes) {
             {"factorization_s", t.factorization},
             {"solve_s", t.solve}};
   j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
+  if (const FluidNewtonReport* n = stokes.newton()) j["newton"] = newton_json(*n);
   // The substructured solve: far-field factorisations (one per near region; their
   // time is part of factorization_s), the expansions (part of solve_s), the last
   // region's size.

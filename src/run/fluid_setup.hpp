@@ -10,6 +10,7 @@
 #include "fluid/chi.hpp"
 #include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
+#include "fluid/stokes_residual.hpp"
 #include "io/case.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/outputs/summary.hpp"
@@ -45,6 +46,12 @@ FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidPar
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
 
+// fluid.viscous_form and fluid.model (SPEC §10) on a solver made with the whole
+// factorisation and kNavierStokesSolver for Navier–Stokes; and the same operator for
+// the residual forces.
+void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f);
+MomentumModel momentum_model(const FluidParams& f);
+
 // One solve for `chi` (the fluid alone: around the structure at rest, or with no
 // structure), exact everywhere; SolverFailure "the fluid solve failed: ..." or on a
 // non-finite field.
@@ -53,5 +60,6 @@ const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::Vect
 // summary.json's "fluid" of the penalised method: sizes, solver, factorisations and
 // their timings, the substructured solve's region.
 Json fluid_json(const PenalisedStokes& stokes);
+Json newton_json(const FluidNewtonReport& n);
 
 }  // namespace fsi

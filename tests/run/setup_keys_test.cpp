@@ -47,7 +47,11 @@ std::string other_value(const std::string& key) {
                                                              {"structure.element", "P2"},
                                                              {"structure.mesher", "gmsh"},
                                                              {"fluid.mesher", "gmsh"},
-                                                             {"output.vtu_format", "zlib"}};
+                                                             {"output.vtu_format", "zlib"},
+                                                             {"fluid.model", "navier-stokes"},
+                                                             {"fluid.rho", "1000"},
+                                                             {"fluid.newton_max_steps", "7"},
+                                                             {"fluid.viscous_form", "gradient"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
@@ -61,6 +65,7 @@ std::string other_value(const std::string& key) {
 std::vector<std::string> companions(const std::string& key) {
   if (key == "contact.boundary") return {"contact.gap=normal"};
   if (key == "fluid.bottom") return {"fluid.right=outflow"};  // an outflow side remains
+  if (key == "fluid.model") return {"fluid.rho=1"};                 // Navier–Stokes needs its density
   return {};
 }
 

@@ -39,7 +39,12 @@ Json to_json(const FluidParams& f) {
             {"h_near", f.h_near},
             {"band", f.band_box ? Json(*f.band_box) : Json(f.band)},
             {"method", f.method},
-            {"mesher", f.mesher}};
+            {"mesher", f.mesher},
+            {"model", f.model},
+            {"viscous_form", f.viscous_form},
+            {"newton_tol", f.newton_tol},
+            {"newton_max_steps", f.newton_max_steps}};
+  if (f.rho > 0) j["rho"] = f.rho;  // 0: not given (Stokes)
   for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) j[kBoxSideKeys[k]] = f.sides[k];
   return j;
 }
