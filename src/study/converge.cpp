@@ -40,7 +40,7 @@ void check_options(const ConvergeOptions& o) {
 void check_level_meshes(const std::vector<LevelSpec>& specs, SetupCache& cache) {
   for (const LevelSpec& spec : specs) {
     try {
-      cache.structure_mesh(spec.c);
+      if (spec.c.structure.shape != "none") cache.structure_mesh(spec.c);
       if (spec.c.fluid && spec.c.fluid->method == "penalised") cache.fluid_mesh(spec.c);  // body-fitted: remeshed per pass
     } catch (const InputError& e) {
       throw InputError("level " + std::to_string(spec.index) + ": " + e.what());
@@ -139,7 +139,9 @@ void run_penalty_check(Study& study, SetupCache& cache, const ConvergeOptions& o
   const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
   const LevelRun& finest = *primary.back();
   const Case& c = finest.spec.c;
-  if (!c.fluid || c.fluid->method != "penalised" || study.refine == "structure" || interrupt_requested()) return;
+  if (!c.fluid || c.fluid->method != "penalised" || study.refine == "structure" || c.structure.shape == "none" ||
+      interrupt_requested())
+    return;  // no structure: no penalty
   LevelRun& check = study.penalty_check;
   check.spec = finest.spec;
   check.spec.scheme = "eps-check";
@@ -183,9 +185,8 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   const Case base = load_case(case_path, options.overrides);
   if (options.refine == "fluid" && !base.fluid)
     throw InputError("--refine fluid: " + base.source + " has no fluid to refine; allowed: all or structure");
-  if (base.structure.shape == "none")  // its quantities are the structure's
-    throw InputError(base.source + ": structure.shape = \"none\": converge studies the structure's quantities; allowed: "
-                     "a case with a structure (run the fluid alone level by level with fsicontact run)");
+  // structure.shape = "none": the fluid alone, its quantities the obstacles' forces
+  // (SPEC §10: the DFG benchmark's drag and lift), the fluid's meshes refined.
   ConvergeResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-converge" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
@@ -206,7 +207,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   study.levels = options.levels;
   study.refine = options.refine;
   study.schemes = options.schemes.empty() ? std::vector<std::string>{base.coupling.scheme} : options.schemes;
-  if (!base.fluid) study.schemes.resize(1);
+  if (!base.fluid || base.structure.shape == "none") study.schemes.resize(1);  // nothing coupled to compare
   for (auto& spec : specs) {
     LevelRun run;
     run.spec = std::move(spec);
@@ -220,7 +221,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   run_levels(study, cache, options);
   run_penalty_check(study, cache, options);
 
-  evaluate(study, base.fluid.has_value());
+  evaluate(study, base);
   run_restarts(study, cache, options);
   result.report = convergence_markdown(study);
   out.write("convergence.csv", [&](const std::string& p) { write_atomically(p, [&](std::ostream& o) { o << convergence_csv(study); }); });

@@ -95,10 +95,11 @@ void judge_restart(Restart& r, double allowed) {
   }
 }
 
-void evaluate(Study& study, bool with_fluid) {
+void evaluate(Study& study, const Case& base) {
+  const bool with_fluid = base.fluid.has_value();
   const std::vector<const LevelRun*> primary = runs_of(study, study.schemes.front());
   study.quantities.clear();
-  for (const Quantity& q : quantities(with_fluid)) {
+  for (const Quantity& q : quantities(base)) {
     QuantityStudy qs;
     qs.quantity = q;
     for (const LevelRun* r : primary) qs.values.push_back(r->result.summary.is_null() ? NAN : q.read(r->result.summary));

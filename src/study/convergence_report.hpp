@@ -77,7 +77,7 @@ struct Study {
 };
 
 // Values, estimates and scheme differences from the runs.
-void evaluate(Study& study, bool with_fluid);
+void evaluate(Study& study, const Case& base);
 
 // The largest difference between schemes that counts as agreement for q: 0.1 of its
 // GCI, or 1e-6 |φ| where there is no GCI; never below its coupling_floor (two runs

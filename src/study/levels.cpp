@@ -13,7 +13,7 @@ namespace {
 std::vector<std::string> level_overrides(const Case& base, int i, double ratio, const std::string& refine) {
   const double scale = std::pow(ratio, -i);
   std::vector<std::string> sets;
-  if (refine != "fluid") sets.push_back("structure.h=" + shortest(base.structure.h * scale));
+  if (refine != "fluid" && base.structure.shape != "none") sets.push_back("structure.h=" + shortest(base.structure.h * scale));
   if (base.fluid && refine != "structure") {
     sets.push_back("fluid.h=" + shortest(base.fluid->h * scale));
     if (base.fluid->h_near > 0) sets.push_back("fluid.h_near=" + shortest(base.fluid->h_near * scale));
@@ -32,13 +32,14 @@ std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vect
   std::vector<std::string> runs = schemes;
   if (runs.empty()) runs.push_back(base.coupling.scheme);
   std::vector<LevelSpec> specs;
-  const std::size_t schemes_run = base.fluid ? runs.size() : 1;  // contact only: no coupling to compare
+  // Contact only, or the fluid alone: no coupling to compare.
+  const std::size_t schemes_run = base.fluid && base.structure.shape != "none" ? runs.size() : 1;
   for (std::size_t s = 0; s < schemes_run; ++s)
     for (int i = 0; i < levels; ++i) {
       std::vector<std::string> sets = overrides;
       const std::vector<std::string> sizes = level_overrides(base, i, ratio, refine);
       sets.insert(sets.end(), sizes.begin(), sizes.end());
-      if (base.fluid) sets.push_back("coupling.scheme=" + runs[s]);
+      if (base.fluid && base.structure.shape != "none") sets.push_back("coupling.scheme=" + runs[s]);
       const std::string dir = "level-" + std::to_string(i + 1) + (s == 0 ? "" : "-" + runs[s]);
       LevelSpec spec{i + 1, runs[s], {}};
       try {

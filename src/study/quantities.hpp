@@ -2,9 +2,11 @@
 // summary.json (NaN where the run has none: no contact, no fluid).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "io/case.hpp"
 #include "run/outputs/summary.hpp"
 
 namespace fsi {
@@ -12,11 +14,16 @@ namespace fsi {
 struct Quantity {
   std::string name;  // summary.json key under "quantities"
   std::string unit;
-  double (*read)(const Json& run_summary);
+  std::function<double(const Json& run_summary)> read;
 };
 
-// max_displacement, tip_displacement (|u| at (L, H/2)), contact_x_min, contact_x_max;
-// with a fluid also fluid_velocity_l2_in_structure, structure_force_x, structure_force_y.
-const std::vector<Quantity>& quantities(bool with_fluid);
+// With a structure: max_displacement, tip_displacement (|u| at (L, H/2)), the
+// contact's extent, centroid and force, and u_x, u_y at each output.probes point
+// (probe_<k>_u_x, ...); with a fluid too: fluid_velocity_l2_in_structure and the
+// structure's force and load. With a fluid: the fluid's force on each obstacle
+// (obstacle_<i>_force_x, _y: SPEC §10's drag and lift) and, with a structure, on the
+// obstacles and the structure together (fluid_force_x, _y: a benchmark's "drag and
+// lift" of a body with a flag).
+std::vector<Quantity> quantities(const Case& c);
 
 }  // namespace fsi
