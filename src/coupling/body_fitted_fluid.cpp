@@ -138,8 +138,10 @@ BodyFittedSolve BodyFittedFluid::solve(const Eigen::VectorXd& u) {
     FluidBoundaryConditions bc = p_.boundary_conditions(*step.mesh);
     bc.dirichlet_labels.push_back(step.mesh->label("Gamma_u"));
     // ε is never used: χ = 0 everywhere (no fictitious domain).
-    PenalisedStokes stokes(*step.mesh, p_.mu, 1.0, p_.f, bc);
+    PenalisedStokes stokes(*step.mesh, p_.mu, 1.0, p_.f, bc, p_.rho > 0 ? kNavierStokesSolver : kDefaultSparseSolver);
     stokes.set_factorization(FluidFactorization::whole);
+    if (p_.form != ViscousForm::symmetric) stokes.set_viscous_form(p_.form);
+    if (p_.rho > 0) stokes.set_navier_stokes(p_.newton);
     stokes.set_chi(Eigen::VectorXd::Zero(step.mesh->num_triangles()));
     step.solution = stokes.solve();
     step.unknowns = stokes.unknowns();
@@ -151,7 +153,7 @@ BodyFittedSolve BodyFittedFluid::solve(const Eigen::VectorXd& u) {
   {
     const Stopwatch clock;  // the residual at the outline's nodes → the structure's load
     const Eigen::Matrix2Xd R =
-        momentum_residual(*step.mesh, p_.mu, p_.f, step.solution, step.outline_nodes);
+        momentum_residual(*step.mesh, MomentumModel{p_.mu, p_.form, p_.rho}, p_.f, step.solution, step.outline_nodes);
     Eigen::VectorXd pressure(static_cast<Eigen::Index>(x.size()));
     for (std::size_t k = 0; k < x.size(); ++k)
       pressure[static_cast<Eigen::Index>(k)] = step.solution.p[step.outline_nodes[k]];

@@ -26,6 +26,7 @@
 #include "coupling/body_fitted_force.hpp"
 #include "fem/harmonic_extension.hpp"
 #include "fluid/penalised_stokes.hpp"
+#include "fluid/stokes_residual.hpp"
 #include "mesh/gmsh_io.hpp"
 
 namespace fsi {
@@ -34,6 +35,11 @@ struct BodyFittedFluidParams {
   FluidGeometry box;  // D: the box, its holes (the disk, or box.holes), and h = hF
   double mu = 0;
   VectorField f;  // f_F
+  // SPEC §10: the viscous form, and ρ > 0 for Navier–Stokes, solved by Newton's
+  // method from rest on each pass's mesh (a new mesh has no last solution to start from).
+  ViscousForm form = ViscousForm::symmetric;
+  double rho = 0;
+  NewtonOptions newton;
   // The conditions on Σ1…Σ5 for a mesh of D (the run layer's, by label); v = 0 on
   // Gamma_u is added here.
   std::function<FluidBoundaryConditions(const Mesh&)> boundary_conditions;

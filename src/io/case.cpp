@@ -175,9 +175,6 @@ void read_fluid_model(Section& s, const Origin& origin, FluidParams& p) {
   p.newton_max_steps = s.integer("newton_max_steps", p.newton_max_steps, 1, 1000);
   p.viscous_form = s.choice("viscous_form", p.viscous_form, {"symmetric", "gradient"});
   if (!p.navier_stokes()) return;
-  if (p.method == "body-fitted")
-    fail(origin, "fluid.model", "= \"navier-stokes\" is solved on the penalised fictitious domain only",
-         "\"stokes\" with fluid.method = \"body-fitted\"");
   if (p.rho == 0)
     fail(origin, "fluid.rho", "is required with fluid.model = \"navier-stokes\"", "a density in [1e-30, 1e30] kg/m³");
   // Newton's Jacobian is unsymmetric and changes everywhere at every step: the far

@@ -45,6 +45,10 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
   // docs/validation.md "The x load").
   p.normal = c.coupling.force == "large" ? PressureNormal::deformed : PressureNormal::reference;
   p.mu = f.mu;
+  const MomentumModel model = momentum_model(f);
+  p.form = model.form;
+  p.rho = model.rho;
+  p.newton = {f.rho, f.newton_tol, f.newton_max_steps};
   const Point f_F = f.f;
   p.f = [f_F](const Point&) { return f_F; };
   const FluidParams params = f;
