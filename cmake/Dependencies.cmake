@@ -9,6 +9,8 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
+# muparser (libmuparser-dev): the case's expressions in x, y, t (common/expression.hpp).
+pkg_check_modules(MUPARSER REQUIRED IMPORTED_TARGET muparser)
 find_package(ZLIB REQUIRED)
 # CGAL (libcgal-dev, header-only, with GMP and MPFR for its exact predicates): the
 # constrained Delaunay triangulation and refinement of the mesh generator. Its target

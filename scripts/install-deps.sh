@@ -16,6 +16,7 @@ packages=(
   libcgal-dev            # CGAL: constrained Delaunay triangulation of the mesh generator
   coinor-libipopt-dev    # IPOPT, the paper's QP solver
   libtomlplusplus-dev    # case files
+  libmuparser-dev        # expressions in case files (fluid.Vmax, fluid.f, structure.f)
   libcli11-dev           # command line
   libcairo2-dev          # PNG figures (drawn by Cairo)
   libpng-dev zlib1g-dev  # PNG encoding, compressed VTU arrays

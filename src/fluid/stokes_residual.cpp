@@ -38,11 +38,15 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, const MomentumModel& model,
   return R;
 }
 
+Point hole_force(const Mesh& mesh, const MomentumModel& model, const std::function<Point(const Point&)>& f_F,
+                 const FluidSolution& s, int label, const Eigen::VectorXd& kappa) {
+  const Eigen::Matrix2Xd R = momentum_residual(mesh, model, f_F, s, mesh.vertices_on(label), kappa);
+  return -R.rowwise().sum();
+}
+
 Point hole_force(const Mesh& mesh, const MomentumModel& model, const Point& f_F, const FluidSolution& s, int label,
                  const Eigen::VectorXd& kappa) {
-  const Eigen::Matrix2Xd R =
-      momentum_residual(mesh, model, [f_F](const Point&) { return f_F; }, s, mesh.vertices_on(label), kappa);
-  return -R.rowwise().sum();
+  return hole_force(mesh, model, [f_F](const Point&) { return f_F; }, s, label, kappa);
 }
 
 }  // namespace fsi

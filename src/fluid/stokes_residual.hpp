@@ -48,6 +48,9 @@ inline Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, double mu, const std
 // The fluid's force on the hole labelled `label` (N per metre of depth: SPEC §10
 // "Forces"): −Σ R over its vertices, the residual of a solution computed with the
 // penalty `kappa` = χ/ε per triangle (empty or zero: no penalty) and the body force f_F.
+Point hole_force(const Mesh& mesh, const MomentumModel& model, const std::function<Point(const Point&)>& f_F,
+                 const FluidSolution& s, int label, const Eigen::VectorXd& kappa);
+// The same for a constant f_F.
 Point hole_force(const Mesh& mesh, const MomentumModel& model, const Point& f_F, const FluidSolution& s, int label,
                  const Eigen::VectorXd& kappa);
 inline Point hole_force(const Mesh& mesh, double mu, const Point& f_F, const FluidSolution& s, int label,

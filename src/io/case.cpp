@@ -142,7 +142,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.H = s.number("H", p.H, kSize);
   p.E = s.number("E", p.E, kSize);
   p.nu = s.number("nu", p.nu, left_open(0, kMaxPoisson));
-  p.f = s.vector2("f", p.f);
+  p.f = s.vector2_or_expressions("f", p.f, p.f_expression, {0, 0, p.L, p.H});  // SPEC §10
   p.h_N = s.vector2("h_N", p.h_N);
   p.h = s.number("h", p.h, kSize);
   p.mesh = resolve_path(s.text("mesh", ""), case_path);
@@ -193,8 +193,9 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   p.H1 = s.number("H1", p.H1, kSize);
   p.H2 = s.number("H2", p.H2, {0, kMaxMagnitude, true, true});  // 0: the box starts at y = 0 (SPEC §10, DFG)
   p.mu = s.number("mu", p.mu, kSize);
-  p.f = s.vector2("f", p.f);
-  p.Vmax = s.number("Vmax", p.Vmax, kSigned);
+  const std::array<double, 4> box = {0, -p.H2, p.L1, p.H1};  // where an expression's magnitude is sampled
+  p.f = s.vector2_or_expressions("f", p.f, p.f_expression, box);  // SPEC §10: numbers or expressions in x, y, t
+  p.Vmax = s.number_or_expression("Vmax", p.Vmax, kSigned, p.Vmax_expression, box);
   for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k)
     p.sides[k] = s.choice(kBoxSideKeys[k], p.sides[k], {"wall", "inflow", "outflow"});
   p.h = s.number("h", p.h, kSize);
@@ -335,6 +336,19 @@ toml::array points_toml(const std::vector<Point>& points) {
   return a;
 }
 
+// A load of SPEC §10 as it was given: a number as a number, an expression as its text.
+void insert_load(toml::table& t, const char* key, double value, const std::string& expression) {
+  if (expression.empty()) t.insert_or_assign(key, value);
+  else t.insert_or_assign(key, expression);
+}
+toml::array load_toml(const Point& p, const std::array<std::string, 2>& expressions) {
+  toml::array a;
+  for (int c = 0; c < 2; ++c)
+    if (expressions[c].empty()) a.push_back(p[c]);
+    else a.push_back(expressions[c]);
+  return a;
+}
+
 InputError parse_error(const std::string& where, const toml::parse_error& e) {
   return InputError(where + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
 }
@@ -391,12 +405,33 @@ std::vector<std::string> case_keys() {
   return keys;
 }
 
+namespace {
+
+// [fluid] of the resolved case.
+toml::table fluid_toml(const FluidParams& f) {
+  toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", load_toml(f.f, f.f_expression)},
+                 {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
+                 {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method},
+                 {"model", f.model}, {"viscous_form", f.viscous_form}, {"newton_tol", f.newton_tol},
+                 {"newton_max_steps", f.newton_max_steps}};
+  insert_load(ft, "Vmax", f.Vmax, f.Vmax_expression);
+  if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given
+  if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
+  else ft.insert("band", f.band);
+  if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
+  if (f.mesher != "lattice") ft.insert("mesher", f.mesher);
+  for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) ft.insert(kBoxSideKeys[k], f.sides[k]);
+  return ft;
+}
+
+}  // namespace
+
 std::string to_toml(const Case& c) {
   auto vec = [](const Point& p) { return toml::array{p.x(), p.y()}; };
   toml::table t;
   t.insert("name", c.name);
   const auto& s = c.structure;
-  toml::table st{{"shape", s.shape}, {"E", s.E}, {"nu", s.nu}, {"f", vec(s.f)}, {"h_N", vec(s.h_N)}, {"h", s.h}};
+  toml::table st{{"shape", s.shape}, {"E", s.E}, {"nu", s.nu}, {"f", load_toml(s.f, s.f_expression)}, {"h_N", vec(s.h_N)}, {"h", s.h}};
   if (s.rectangle() || s.extent_given) st.insert("L", s.L), st.insert("H", s.H);  // a file's own extent otherwise
   if (!s.mesh.empty()) st.insert("mesh", s.mesh);
   if (!s.geo.empty()) st.insert("geo", s.geo);
@@ -421,21 +456,7 @@ std::string to_toml(const Case& c) {
     }
     t.insert("obstacles", list);
   }
-  if (c.fluid) {
-    const auto& f = *c.fluid;
-    toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", vec(f.f)},
-                   {"Vmax", f.Vmax}, {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
-                   {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method},
-                   {"model", f.model}, {"viscous_form", f.viscous_form}, {"newton_tol", f.newton_tol},
-                   {"newton_max_steps", f.newton_max_steps}};
-    if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given
-    if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});
-    else ft.insert("band", f.band);
-    if (!f.mesh.empty()) ft.insert("mesh", f.mesh);
-    if (f.mesher != "lattice") ft.insert("mesher", f.mesher);
-    for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) ft.insert(kBoxSideKeys[k], f.sides[k]);
-    t.insert("fluid", ft);
-  }
+  if (c.fluid) t.insert("fluid", fluid_toml(*c.fluid));
   const auto& k = c.coupling;
   toml::table coupling{{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
                       {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};

@@ -11,6 +11,15 @@
 
 namespace fsi {
 
+// fluid.Vmax, fluid.f and structure.f (each of f's components) are a number or an
+// expression in x, y, t (SPEC §10; common/expression.hpp), compiled when the case is
+// read (a bad one is an InputError naming the column). With an expression the number
+// beside it (Vmax, f) holds, for the checks between keys and the estimates made from
+// the case (the strain scale, the Reynolds number), a magnitude: its value of largest
+// magnitude, sign kept, at 5 × 5 points of the fluid box (structure.f: of the rectangle
+// L × H) at t = 0 (case_expressions.cpp). A constant expression ("8.0") is its value
+// there, exactly. The solvers see neither: run/case_fields.hpp makes the fields.
+
 struct StructureParams {
   // SPEC §9: "rectangle" (L × H, generated) | "mesh" (the .msh file `mesh`) | "geo"
   // (the Gmsh script `geo`, meshed at h). A mesh given without shape means "mesh".
@@ -18,7 +27,10 @@ struct StructureParams {
   double L = 0.3, H = 0.03;
   bool extent_given = false;  // L or H set: a mesh's or script's extent must match
   double E = 3.0e5, nu = 0.45;
-  Point f{0.0, -9.81 * 1100.0};  // f_S, N/m³
+  Point f{0.0, -9.81 * 1100.0};  // f_S, N/m³ (see f_expression)
+  // structure.f's components given as expressions in x, y, t (SPEC §10), "" where a
+  // number (the note above StructureParams).
+  std::array<std::string, 2> f_expression;
   Point h_N{0.0, 0.0};           // surface load on Γ_N, N/m²
   double h = 0.015;              // hS
   std::string mesh;              // optional .msh file (resolved path)
@@ -61,8 +73,12 @@ struct FluidParams {
   // (traction-free). The defaults are the paper's (§3).
   std::array<std::string, 4> sides = {"wall", "outflow", "wall", "inflow"};
   double mu = 0.0035;
-  Point f{0.0, -9.81 * 100.0};  // f_F, N/m³
-  double Vmax = 8.0;
+  Point f{0.0, -9.81 * 100.0};  // f_F, N/m³ (see f_expression)
+  double Vmax = 8.0;             // the inflow's peak (see Vmax_expression)
+  // fluid.f's components and fluid.Vmax given as expressions in x, y, t (SPEC §10), ""
+  // where a number (the note above StructureParams).
+  std::array<std::string, 2> f_expression;
+  std::string Vmax_expression;
   double h = 0.01;                  // hF
   std::string mesh;                 // optional .msh file (resolved path)
   std::string mesher =

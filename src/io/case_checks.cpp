@@ -351,7 +351,10 @@ void check_case(const Case& c, const Origin& origin) {
 
 namespace fsi {
 
-// The loads' strain scale (|f_S|·diam + |h_N|)/E: linear elasticity means ≪ 1.
+// The loads' strain scale (|f_S|·diam + |h_N|)/E: linear elasticity means ≪ 1. A load
+// given as an expression (SPEC §10) enters by its magnitude, the largest of its values
+// at 5 × 5 points of its box at t = 0 (io/case.hpp, above StructureParams): an estimate,
+// as the scale itself is.
 std::string load_strain_problem(const Case& c, double diam) {
   using case_detail::kMaxStrainScale;
   const auto& s = c.structure;

@@ -83,6 +83,16 @@ class Section {
       fail(origin_, full(key), "= [" + shortest(v.x()) + ", " + shortest(v.y()) + "] is out of range", allowed);
     return v;
   }
+  // SPEC §10: a number in `range`, or a string, an expression in x, y, t compiled here
+  // (case_expressions.cpp; a bad one fails with its column). Its text goes into
+  // `expression` ("" for a number); returned: the number, a constant expression's
+  // value, or a varying one's magnitude on `box` = [x_min, y_min, x_max, y_max] at t = 0
+  // (the note above StructureParams, io/case.hpp).
+  double number_or_expression(const std::string& key, double value, const Range& range, std::string& expression,
+                              const std::array<double, 4>& box);
+  // [a, b], each a number in `range` or an expression as above; two numbers read as vector2.
+  Point vector2_or_expressions(const std::string& key, Point value, std::array<std::string, 2>& expressions,
+                               const std::array<double, 4>& box, const Range& range = kSigned);
   // A width (a number, m) or a box [x_min, y_min, x_max, y_max].
   void band(const std::string& key, double& width, std::optional<std::array<double, 4>>& box) {
     const toml::node* n = find(key);

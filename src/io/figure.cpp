@@ -158,6 +158,27 @@ void Figure::filled_polygon(const std::vector<Point>& points, const Rgb& colour,
   cairo_restore(cr_);
 }
 
+void Figure::arrow(const Point& tail, const Point& head, const Rgb& colour, double width_px) {
+  const double x0 = px(tail.x()), y0 = py(tail.y()), x1 = px(head.x()), y1 = py(head.y());
+  const double length = std::hypot(x1 - x0, y1 - y0);
+  if (!(length > 1.0)) return;  // under a pixel: nothing to see
+  const double ux = (x1 - x0) / length, uy = (y1 - y0) / length, tip = std::min(0.35 * length, 4.0 * width_px + 3.0);
+  cairo_save(cr_);
+  cairo_rectangle(cr_, left_, top_, plot_w_, plot_h_);
+  cairo_clip(cr_);
+  cairo_set_source_rgb(cr_, colour[0], colour[1], colour[2]);
+  cairo_set_line_width(cr_, width_px);
+  cairo_move_to(cr_, x0, y0);
+  cairo_line_to(cr_, x1 - ux * tip, y1 - uy * tip);
+  cairo_stroke(cr_);
+  cairo_move_to(cr_, x1, y1);  // the head: a triangle of half-width tip/2
+  cairo_line_to(cr_, x1 - ux * tip - uy * tip / 2, y1 - uy * tip + ux * tip / 2);
+  cairo_line_to(cr_, x1 - ux * tip + uy * tip / 2, y1 - uy * tip - ux * tip / 2);
+  cairo_close_path(cr_);
+  cairo_fill(cr_);
+  cairo_restore(cr_);
+}
+
 void Figure::marker(const Point& p, const Rgb& colour, double radius_px) {
   cairo_save(cr_);
   cairo_arc(cr_, px(p.x()), py(p.y()), radius_px, 0, 2 * M_PI);

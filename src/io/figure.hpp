@@ -42,6 +42,8 @@ class Figure {
                 bool closed = false, bool dashed = false);
   void filled_polygon(const std::vector<Point>& points, const Rgb& colour, double alpha = 1.0);
   void marker(const Point& p, const Rgb& colour, double radius_px);
+  // An arrow from tail to head (world coordinates), its head a few line widths long.
+  void arrow(const Point& tail, const Point& head, const Rgb& colour, double width_px);
   void colour_bar(double lo, double hi, const std::string& label);
   void legend(const std::vector<std::pair<Rgb, std::string>>& entries);
   void axes(const std::string& x_label, const std::string& y_label);

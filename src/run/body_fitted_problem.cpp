@@ -19,6 +19,7 @@
 #include "mesh/mesh_error.hpp"
 #include "run/outputs/coupling_outputs.hpp"
 #include "run/outputs/fluid_outputs.hpp"
+#include "run/case_fields.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/fluid_structure_problem.hpp"
 #include "run/outputs/obstacle_forces.hpp"
@@ -49,8 +50,7 @@ BodyFittedFluidParams body_fitted_params(const Case& c) {
   p.form = model.form;
   p.rho = model.rho;
   p.newton = {f.rho, f.newton_tol, f.newton_max_steps};
-  const Point f_F = f.f;
-  p.f = [f_F](const Point&) { return f_F; };
+  p.f = fluid_body_force(f);
   const FluidParams params = f;
   p.boundary_conditions = [params](const Mesh& mesh) {
     return box_boundary_conditions(mesh, params);
@@ -120,6 +120,7 @@ class BodyFittedProblem : public FluidStructureProblem {
     if (c_.obstacles_given)
       j["obstacles"] = hole_forces_json(c_, last_ ? *last_->mesh : s_->mesh(), last_ ? &last_->solution : nullptr, {});
     j["fluid"] = fluid_json(result_, last_);
+    j["fluid"].update(flow_json(c_));
     r.report = report(m);
     if (!result_.failure.empty()) r.report += " Failed: " + result_.failure + ".";
     if (!m.convergence_warning.empty()) r.report += " Warning: " + m.convergence_warning + ".";

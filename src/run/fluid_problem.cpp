@@ -73,6 +73,7 @@ class FluidProblem final : public Problem {
     add_measures(j, r.measures);
     j["obstacles"] = obstacle_forces_json(c_, *f_);
     j["fluid"] = fluid_json(*f_->stokes);
+    j["fluid"].update(flow_json(c_));
     r.report = failure_.empty() ? fluid_report(c_, *f_->stokes, stats_, j["obstacles"])
                                 : c_.name + ": failed: " + failure_;
   }
@@ -87,6 +88,11 @@ class FluidProblem final : public Problem {
       out.write("fluid.png", [&](const std::string& p) {
         write_fluid_png(p, c_, *f_->mesh, *fluid_, Mesh{}, {}, c_.name + ": fluid velocity magnitude (no structure)",
                         "hF = " + shortest(c_.fluid->h) + ";  no structure");
+      });
+    if (const std::optional<WorldBox> wake = wake_box(c_); c_.output.png && wake)  // where the flow separates
+      out.write("fluid-wake.png", [&](const std::string& p) {
+        write_fluid_png(p, c_, *f_->mesh, *fluid_, Mesh{}, {}, "", "the first obstacle's wake;  hF = " + shortest(c_.fluid->h),
+                        &*wake);
       });
     write_case_toml(out, c_);
   }

@@ -1,8 +1,11 @@
 #include "run/fluid_setup.hpp"
 
+#include <cmath>
+
 #include "common/errors.hpp"
 #include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/case_fields.hpp"
 #include "run/fluid_band.hpp"
 #include "run/hole_checks.hpp"
 #include "run/mesh_checks.hpp"
@@ -59,20 +62,22 @@ namespace {
 // magnitude Vmax·4s(ℓ − s)/ℓ², s the coordinate along the side from its lower or left
 // end. It is written as Vmax·4s(s − ℓ)/ℓ² (≤ 0) times the outward normal's component,
 // so that Σ4's is, bit for bit, the paper's g = (0, Vmax·4x(x − L1)/L1²) of §3. It
-// vanishes at both ends: the corners shared with walls or other inflows agree.
+// vanishes at both ends: the corners shared with walls or other inflows agree. Vmax is
+// fluid.Vmax at the point (SPEC §10: a number, or an expression in x, y, t at t = 0).
 VectorField inflow(int k, const FluidParams& f) {
-  const double Vmax = f.Vmax, H2 = f.H2;
+  const ScalarField Vmax = inflow_peak(f);
+  const double H2 = f.H2;
   const bool vertical = k == 0 || k == 2;           // Σ1, Σ3: along y
   const double l = vertical ? f.H1 + f.H2 : f.L1;   // ℓ
   const double outward = k == 0 || k == 1 ? -1 : 1;  // Σ1: −x, Σ2: −y, Σ3: +x, Σ4: +y
   if (vertical)
     return [=](const Point& x) {
       const double s = x.y() + H2;
-      return Point(outward * (Vmax * 4 * s * (s - l) / (l * l)), 0);
+      return Point(outward * (Vmax(x) * 4 * s * (s - l) / (l * l)), 0);
     };
   return [=](const Point& x) {
     const double s = x.x();
-    return Point(0, outward * (Vmax * 4 * s * (s - l) / (l * l)));
+    return Point(0, outward * (Vmax(x) * 4 * s * (s - l) / (l * l)));
   };
 }
 
@@ -97,13 +102,12 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   const FluidParams& f = *c.fluid;
   FluidSetup s;
   s.mesh = std::make_unique<Mesh>(std::move(mesh));
-  const Point f_F = f.f;
   // The substructured solve orders the unknowns on a second thread meanwhile, from
   // the start of the solver's set-up.
   const FluidFactorization factorization =
       f.factorization == "whole" ? FluidFactorization::whole : FluidFactorization::schur;
   s.stokes = std::make_unique<PenalisedStokes>(
-      *s.mesh, f.mu, eps, [f_F](const Point&) { return f_F; }, box_boundary_conditions(*s.mesh, f),
+      *s.mesh, f.mu, eps, fluid_body_force(f), box_boundary_conditions(*s.mesh, f),
       f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
   set_fluid_model(*s.stokes, f);
   s.locator = std::make_unique<PointLocator>(*s.mesh);
@@ -146,6 +150,50 @@ Json newton_json(const FluidNewtonReport& n) {
           {"last_rejected_steps", n.rejected},
           {"last_residuals", n.residuals},
           {"max_final_residual", n.max_final_residual}};
+}
+
+namespace {
+
+// The first obstacle's extent across a flow along `along` (0: x, 1: y), or NaN.
+double obstacle_width(const Case& c, int along) {
+  const int across = 1 - along;
+  if (!c.obstacles_given) return 2 * c.obstacle.r;
+  if (c.obstacles.empty()) return NAN;
+  const ObstacleSpec& o = c.obstacles.front();
+  if (o.shape == "disk") return 2 * o.r;
+  if (o.shape != "polygon") return NAN;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Point& p : o.points) lo = std::min(lo, p[across]), hi = std::max(hi, p[across]);
+  return hi - lo;
+}
+
+}  // namespace
+
+Reynolds reynolds_number(const Case& c) {
+  Reynolds re;
+  const FluidParams& f = *c.fluid;
+  int inflow = -1;
+  for (int k = 0; k < 4; ++k)
+    if (f.sides[k] == "inflow" && inflow < 0) inflow = k;
+  if (!f.navier_stokes() || inflow < 0) return re;
+  const int along = inflow == 0 || inflow == 2 ? 0 : 1;  // the flow's direction: x from Σ1, Σ3
+  re.U = 2 * std::abs(f.Vmax) / 3;
+  re.L = obstacle_width(c, along);
+  re.length = "the first obstacle's width across the inflow";
+  if (!std::isfinite(re.L)) {
+    re.L = along == 0 ? f.H1 + f.H2 : f.L1;
+    re.length = "the inflow side's length";
+  }
+  re.value = f.rho * re.U * re.L / f.mu;
+  return re;
+}
+
+Json flow_json(const Case& c) {
+  Json j = {{"model", c.fluid->model}, {"viscous_form", c.fluid->viscous_form}};
+  const Reynolds re = reynolds_number(c);
+  if (std::isfinite(re.value))
+    j["reynolds"] = {{"value", re.value}, {"mean_inflow_velocity", re.U}, {"length", re.L}, {"length_is", re.length}};
+  return j;
 }
 
 Json fluid_json(const PenalisedStokes& stokes) {

@@ -60,6 +60,18 @@ const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::Vect
 // summary.json's "fluid" of the penalised method: sizes, solver, factorisations and
 // their timings, the substructured solve's region.
 Json fluid_json(const PenalisedStokes& stokes);
+
+// The Reynolds number ρ Ū L / μ of a Navier–Stokes case (SPEC §10): Ū = 2 Vmax / 3,
+// the parabolic inflow's mean, and L the first obstacle's width across the inflow
+// (a disk's diameter: the DFG benchmarks' Re = 20) or, without one, the inflow side's
+// length. NaN for Stokes or without an inflow.
+struct Reynolds {
+  double value = NAN, U = NAN, L = NAN;
+  std::string length;  // what L is, in words
+};
+Reynolds reynolds_number(const Case& c);
+// summary.json's fluid.model and fluid.reynolds (value, mean_inflow_velocity, length).
+Json flow_json(const Case& c);
 Json newton_json(const FluidNewtonReport& n);
 
 }  // namespace fsi

@@ -8,6 +8,7 @@
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
 #include "run/outputs/coupling_outputs.hpp"
+#include "run/case_fields.hpp"
 #include "run/fluid_band.hpp"
 #include "run/outputs/fluid_outputs.hpp"
 #include "run/outputs/obstacle_forces.hpp"
@@ -88,8 +89,7 @@ void PenalisedProblem::set_up(PhaseTimes& times) {
 }
 
 FluidForce PenalisedProblem::fluid_force() const {
-  const Point f_F = c_.fluid->f;
-  const auto f = [f_F](const Point&) { return f_F; };
+  const VectorField f = fluid_body_force(*c_.fluid);  // f_F∘φ in eq. (33)
   const ForceModel model = c_.coupling.force == "large" ? ForceModel::large : ForceModel::small;
   const double eps = f_->stokes->eps();  // the fluid's ε (a sweep's row sets it there): one owner
   if (s_->p2()) return FluidForce(*s_->p2(), c_.fluid->mu, eps, f, model);
@@ -152,6 +152,7 @@ void PenalisedProblem::summarise(RunResult& r) {
   summarise_structure(j, m);
   if (c_.obstacles_given) j["obstacles"] = obstacle_forces_json(c_, *f_);  // the fluid's force on each (SPEC §10)
   j["fluid"] = fluid_json(*f_->stokes);
+  j["fluid"].update(flow_json(c_));
   r.report = report(m);
 }
 

@@ -6,6 +6,7 @@
 #include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/case_contact.hpp"
+#include "run/case_fields.hpp"
 #include "run/mesh_checks.hpp"
 #include "solid/p2_elasticity.hpp"
 #include "qp/active_set_solver.hpp"
@@ -54,14 +55,16 @@ Mesh make_structure_mesh(const Case& c) {
 namespace {
 
 // ∫ f_S·w + ∫_{Γ_N} h_S·w for constant f_S, h_N: exact with one point (P1) and with the
-// P2 space's degree-2 triangle and 2-point edge rules.
+// P2 space's degree-2 triangle and 2-point edge rules. An f_S that varies (an
+// expression, SPEC §10) takes the degree-4 rule: exact for its quadratic part on P2.
 Eigen::VectorXd applied_load(const Case& c, const Mesh& mesh, const P2Space* p2) {
-  const Point f = c.structure.f, h_N = c.structure.h_N;
-  const auto f_S = [f](const Point&) { return f; };
+  const Point h_N = c.structure.h_N;
+  const VectorField f_S = structure_body_force(c.structure);
   const auto h_S = [h_N](const Point&) { return h_N; };
   const int gamma_n = mesh.label("Gamma_N");
-  if (p2) return assemble_volume_load(*p2, f_S, 2) + assemble_surface_load(*p2, gamma_n, h_S, 2);
-  return assemble_volume_load(mesh, f_S, 1) + assemble_surface_load(mesh, gamma_n, h_S, 1);
+  const bool varies = body_force_varies(c.structure);
+  if (p2) return assemble_volume_load(*p2, f_S, varies ? 4 : 2) + assemble_surface_load(*p2, gamma_n, h_S, 2);
+  return assemble_volume_load(mesh, f_S, varies ? 4 : 1) + assemble_surface_load(mesh, gamma_n, h_S, 1);
 }
 
 }  // namespace

@@ -136,7 +136,8 @@ void evaluate(Study& study, const Case& base) {
   // δ spread over the structure is δ·sqrt(|Ω_S0|). Tied to the discretisation, the
   // tolerance should be below a thousandth of max |u|'s GCI so measured.
   const Case& finest = primary.back()->spec.c;
-  if (!finest.fluid) return;  // the contact problem has no coupling: nothing to advise
+  // The contact problem, or the fluid alone: no coupling, nothing to advise.
+  if (!finest.fluid || finest.structure.shape == "none") return;
   study.tol_used = finest.coupling.tol;
   const double gci = study.quantities.front().estimate.gci_abs;
   study.tol_advised = std::isfinite(gci) ? 1e-3 * gci * std::sqrt(finest.structure.L * finest.structure.H) : NAN;

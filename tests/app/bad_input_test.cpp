@@ -188,6 +188,12 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"surface_load_overflow", kValid, "--set structure.h_N=[0,1e300]", {"--set structure.h_N", "out of range"}},
       {"length_overflow", kValid, "--set structure.L=1e31", {"--set structure.L", "[1e-30, 1e+30]"}},
       {"vmax_overflow", kValid + "[fluid]\nVmax = 1e31\n", "", {"fluid.Vmax", "0 or a magnitude"}},
+      // SPEC §10: expressions in x, y, t, compiled when the case is read.
+      {"vmax_unknown_variable", kValid + "[fluid]\nVmax = \"0.3*sin(pi*q)\"\n", "", {"case.toml: fluid.Vmax = \"0.3*sin(pi*q)\": unknown variable \"q\" at column 12; allowed: a number, or an expression in x, y, t with pi"}},
+      {"fluid_f_syntax", kValid + "[fluid]\n", "--set 'fluid.f=[0, \"-981*(1 + x\"]'", {"--set fluid.f: fluid.f (the y component) = \"-981*(1 + x\": missing parenthesis at column 12", "an expression in x, y, t with pi"}},
+      {"structure_f_unknown_function", kValid, "--set 'structure.f=[\"grav(x)\", 0]'", {"structure.f (the x component)", "unknown function \"grav\" at column 1"}},
+      {"vmax_not_a_number_or_string", kValid + "[fluid]\nVmax = [8]\n", "", {"case.toml: fluid.Vmax must be a number or a string (an expression)"}},
+      {"fluid_f_not_numbers_or_strings", kValid + "[fluid]\nf = [0, true]\n", "", {"case.toml: fluid.f must be an array of two numbers or expressions"}},
       {"navier_stokes_without_rho", kValid + "[fluid]\n", "--set fluid.model=navier-stokes", {"fluid.rho", "required", "navier-stokes"}},
       {"rho_zero", kValid + "[fluid]\nrho = 0\n", "", {"case.toml: fluid.rho", "[1e-30, 1e+30]"}},
       {"rho_negative", kValid + "[fluid]\n", "--set fluid.rho=-1000", {"fluid.rho", "[1e-30, 1e+30]"}},

@@ -48,6 +48,17 @@ TEST(NavierStokesRun, Dfg2d1DragAndLiftOnACoarseMesh) {
   EXPECT_LE(n["steps"].get<int>(), 8);
   EXPECT_LE(n["max_final_residual"].get<double>(), 1e-10);
   EXPECT_EQ(s["fluid"]["analyses"], 1);  // one symbolic analysis for every step
+  EXPECT_NEAR(s["fluid"]["reynolds"]["value"].get<double>(), 20.0, 1e-9);  // ρ (2 Vmax / 3) D / μ
+}
+
+// The pictures: the whole box and the cylinder's wake, where the flow separates.
+TEST(NavierStokesRun, DrawsTheWake) {
+  const fs::path dir = testing::scratch_dir("navier-stokes-wake");
+  const testing::CliRun r =
+      testing::run_cli("run " + kCases + "dfg-2d1.toml -q --out res --set fluid.h=0.04 --set fluid.h_near=0.02 --set output.vtu=false", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(fs::file_size(dir / "res/fluid.png"), 10000u);
+  EXPECT_GT(fs::file_size(dir / "res/fluid-wake.png"), 10000u);
 }
 
 // Re = 2000 in the DFG channel: no steady flow from rest; newton_max_steps bounds the

@@ -2,6 +2,7 @@
 
 #include "common/errors.hpp"
 #include "fluid/stokes_residual.hpp"
+#include "run/case_fields.hpp"
 #include "run/fluid_setup.hpp"
 
 namespace fsi {
@@ -28,7 +29,8 @@ Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, c
       continue;
     }
     const int label = mesh.label(c.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
-    list.push_back({{"force", point_json(hole_force(mesh, momentum_model(*c.fluid), c.fluid->f, *s, label, kappa))}});
+    const Point force = hole_force(mesh, momentum_model(*c.fluid), fluid_body_force(*c.fluid), *s, label, kappa);
+    list.push_back({{"force", point_json(force)}});
   }
   return list;
 }

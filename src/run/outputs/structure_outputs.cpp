@@ -107,6 +107,17 @@ WorldBox structure_frame(const Case& c, const Mesh& ref, const Mesh& def) {
   return {box.x_min - pad, box.x_max + pad, box.y_min - pad, box.y_max + pad};
 }
 
+// structure.f as the note shows it: "(0, -1.1e+04)", an expression (SPEC §10) as its text.
+std::string body_force_words(const StructureParams& s) {
+  std::string words = "(";
+  for (int c = 0; c < 2; ++c) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%g", s.f[c]);
+    words += (c ? ", " : "") + (s.f_expression[c].empty() ? std::string(number) : s.f_expression[c]);
+  }
+  return words + ")";
+}
+
 // The two lines under the title: the load, material and mesh; the contact zone.
 void structure_notes(Figure& fig, const Case& c, const StructureSetup& s, const ContactSolution& solution,
                      double max_u) {
@@ -114,9 +125,9 @@ void structure_notes(Figure& fig, const Case& c, const StructureSetup& s, const 
   const ContactSummary cs = summarize_contact(*s.solver, solution);
   char line[256];
   std::snprintf(line, sizeof line,
-                "f_S = (%g, %g) N/m^3, E = %g Pa, nu = %g;  %smesh %d triangles / %d %s;  "
+                "f_S = %s N/m^3, E = %g Pa, nu = %g;  %smesh %d triangles / %d %s;  "
                 "max |u| = %.4g m",
-                c.structure.f.x(), c.structure.f.y(), c.structure.E, c.structure.nu, s.p2() ? "P2 " : "",
+                body_force_words(c.structure).c_str(), c.structure.E, c.structure.nu, s.p2() ? "P2 " : "",
                 s.p2() ? s.p2()->mesh().num_triangles() : ref.num_triangles(), ref.num_vertices(),
                 s.p2() ? "nodes" : "vertices", max_u);
   fig.note(line);

@@ -11,11 +11,17 @@ namespace {
 
 Json vec(const Point& p) { return Json::array({p.x(), p.y()}); }
 
+// A load of SPEC §10 as it was given: a number as a number, an expression as its text.
+Json load_json(double value, const std::string& expression) { return expression.empty() ? Json(value) : Json(expression); }
+Json load_json(const Point& p, const std::array<std::string, 2>& expressions) {
+  return Json::array({load_json(p.x(), expressions[0]), load_json(p.y(), expressions[1])});
+}
+
 }  // namespace
 
 Json to_json(const StructureParams& s) {
   return {{"shape", s.shape},  {"L", s.L},      {"H", s.H},          {"E", s.E},
-          {"nu", s.nu},        {"f", vec(s.f)}, {"h_N", vec(s.h_N)}, {"h", s.h},
+          {"nu", s.nu},        {"f", load_json(s.f, s.f_expression)}, {"h_N", vec(s.h_N)}, {"h", s.h},
           {"mesh", s.mesh},    {"geo", s.geo},  {"model", s.model},  {"element", s.element},
           {"mesher", s.mesher}};
 }
@@ -29,8 +35,8 @@ Json to_json(const FluidParams& f) {
             {"H1", f.H1},
             {"H2", f.H2},
             {"mu", f.mu},
-            {"f", vec(f.f)},
-            {"Vmax", f.Vmax},
+            {"f", load_json(f.f, f.f_expression)},
+            {"Vmax", load_json(f.Vmax, f.Vmax_expression)},
             {"h", f.h},
             {"mesh", f.mesh},
             {"chi", f.chi},
