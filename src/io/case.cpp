@@ -271,6 +271,7 @@ void read_output(const toml::table& root, const Origin& origin, Case& c, std::ve
   c.output.vtu = s.boolean("vtu", c.output.vtu);
   c.output.vtu_format = s.choice("vtu_format", c.output.vtu_format, {"binary", "zlib", "ascii"});
   c.output.probes = read_probes(s, origin);
+  c.output.fluid_probes = read_probes(s, origin, "fluid_probes");
   const std::string problem = output_path_problem(c.output.dir);
   if (!problem.empty()) fail(origin, "output.dir", problem, "a directory path");
   s.reject_unknown();
@@ -467,6 +468,7 @@ std::string to_toml(const Case& c) {
   toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};
   if (c.output.vtu_format != "binary") output.insert("vtu_format", c.output.vtu_format);
   if (!c.output.probes.empty()) output.insert("probes", points_toml(c.output.probes));
+  if (!c.output.fluid_probes.empty()) output.insert("fluid_probes", points_toml(c.output.fluid_probes));
   t.insert("output", output);
   std::ostringstream out;
   out << t << "\n";

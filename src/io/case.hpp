@@ -156,6 +156,10 @@ struct OutputParams {
   // output.probes (SPEC §11): material points, in reference coordinates, where
   // summary.json (displacement_at) and history.csv report the displacement.
   std::vector<Point> probes;
+  // output.fluid_probes (SPEC §10): points of D (the current configuration: the fixed
+  // mesh) where summary.json's fluid_at reports v and p, e.g. the DFG benchmark's
+  // pressure difference.
+  std::vector<Point> fluid_probes;
 };
 
 struct Case {

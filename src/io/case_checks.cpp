@@ -318,6 +318,9 @@ void check_no_structure(const Case& c, const Origin& o) {
 }
 
 void check_case(const Case& c, const Origin& origin) {
+  if (!c.output.fluid_probes.empty() && !c.fluid)  // points of the flow (SPEC §10)
+    fail(origin, "output.fluid_probes", "names points of the fluid, and the case has no [fluid] section",
+         "output.fluid_probes with a [fluid] section");
   if (c.structure.shape == "none") {
     check_no_structure(c, origin);
     check_obstacles(c, origin);

@@ -154,6 +154,7 @@ inline const toml::table* section_table(const toml::table& root, const std::stri
 }
 
 // output.probes of the [output] section (case_probes.cpp).
-std::vector<Point> read_probes(Section& output, const Origin& origin);
+// output.<name> (probes, fluid_probes): [[x, y], ...].
+std::vector<Point> read_probes(Section& output, const Origin& origin, const std::string& name = "probes");
 
 }  // namespace fsi::case_detail

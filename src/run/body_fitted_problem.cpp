@@ -119,6 +119,7 @@ class BodyFittedProblem : public FluidStructureProblem {
     // pass's mesh and solution; κ empty: no penalty.
     if (c_.obstacles_given)
       j["obstacles"] = hole_forces_json(c_, last_ ? *last_->mesh : s_->mesh(), last_ ? &last_->solution : nullptr, {});
+    if (!c_.output.fluid_probes.empty() && last_) j["fluid_at"] = fluid_probes_json(c_, *last_->mesh, &last_->solution);
     j["fluid"] = fluid_json(result_, last_);
     j["fluid"].update(flow_json(c_));
     r.report = report(m);

@@ -72,6 +72,7 @@ class FluidProblem final : public Problem {
     j["mesh"] = {{"fluid", to_json(stats_)}};
     add_measures(j, r.measures);
     j["obstacles"] = obstacle_forces_json(c_, *f_);
+    if (!c_.output.fluid_probes.empty()) j["fluid_at"] = fluid_probes_json(c_, *f_);
     j["fluid"] = fluid_json(*f_->stokes);
     j["fluid"].update(flow_json(c_));
     r.report = failure_.empty() ? fluid_report(c_, *f_->stokes, stats_, j["obstacles"])

@@ -53,6 +53,7 @@ Mesh make_fluid_mesh(const Case& c) {
   }
   Mesh mesh = build_fluid_mesh(c, band);
   if (!c.fluid->mesh.empty()) check_fluid_mesh(c, mesh);
+  check_fluid_probes_inside(c, mesh);
   return mesh;
 }
 

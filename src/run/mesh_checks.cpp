@@ -271,6 +271,23 @@ void check_probes_inside(const Case& c, const Mesh& mesh, const std::string& wha
   }
 }
 
+// output.fluid_probes (SPEC §10) lie in D: inside the mesh, or within a tenth of hF of
+// it (a point on a curved hole's boundary falls just off the meshed polygon; it is read
+// at the nearest boundary point).
+void check_fluid_probes_inside(const Case& c, const Mesh& mesh) {
+  if (c.output.fluid_probes.empty()) return;
+  const double tol = 0.1 * c.fluid->h;
+  const PointLocator locator(mesh);
+  for (std::size_t i = 0; i < c.output.fluid_probes.size(); ++i) {
+    const Point& x = c.output.fluid_probes[i];
+    const double distance = locator.locate(x) ? 0.0 : (locator.nearest_boundary_point(x) - x).norm();
+    if (distance > tol)
+      throw InputError(c.source + ": output.fluid_probes[" + std::to_string(i + 1) + "] = " + at(x) + " is " +
+                       approx(distance) + " m outside the fluid domain (a hole or beyond the box); allowed: points of "
+                       "the fluid's mesh, within fluid.h / 10 = " + approx(tol) + " m of it");
+  }
+}
+
 void check_structure_mesh(const Case& c, const Mesh& mesh) {
   const auto& s = c.structure;
   const std::string what = s.rectangle() ? "the generated structure mesh" : "structure." + s.shape + " " + s.file();

@@ -33,6 +33,9 @@ void check_structure_mesh(const Case& c, const Mesh& mesh);
 // the coordinates), Σ5 is the obstacle's circle and D excludes the disk (with
 // [[obstacles]]: a hole per obstacle, check_mesh_holes), every boundary edge labelled.
 void check_fluid_mesh(const Case& c, const Mesh& mesh);
+// output.fluid_probes (SPEC §10) in D, generated or read, up to fluid.h / 10
+// (InputError naming the probe otherwise).
+void check_fluid_probes_inside(const Case& c, const Mesh& mesh);
 
 // The first boundary edge of the triangulation (used by one triangle) that carries
 // no label, as its two vertex indices; {-1, -1} if none.

@@ -151,6 +151,7 @@ void PenalisedProblem::summarise(RunResult& r) {
   add_structure_displacements(j, c_, *s_, result_);
   summarise_structure(j, m);
   if (c_.obstacles_given) j["obstacles"] = obstacle_forces_json(c_, *f_);  // the fluid's force on each (SPEC §10)
+  if (!c_.output.fluid_probes.empty()) j["fluid_at"] = fluid_probes_json(c_, *f_);
   j["fluid"] = fluid_json(*f_->stokes);
   j["fluid"].update(flow_json(c_));
   r.report = report(m);

@@ -67,6 +67,7 @@ const Mesh& SetupCache::fluid_mesh(const Case& c) {
   auto it = fluid_meshes_.find(key);
   if (it == fluid_meshes_.end()) it = fluid_meshes_.emplace(key, build_fluid_mesh(c, box)).first;
   if (!c.fluid->mesh.empty()) check_fluid_mesh(c, it->second);
+  check_fluid_probes_inside(c, it->second);
   return it->second;
 }
 

@@ -43,6 +43,13 @@ double obstacle_force(const Json& s, std::size_t k, int i) {
   return component(s["obstacles"][k], "force", i);
 }
 
+// fluid_at[k]'s pressure (i < 0) or velocity component i.
+double fluid_probe(const Json& s, std::size_t k, int i) {
+  if (!s.contains("fluid_at") || !s["fluid_at"].is_array() || s["fluid_at"].size() <= k) return NAN;
+  const Json& e = s["fluid_at"][k];
+  return i < 0 ? at(e, "p") : component(e, "v", i);
+}
+
 double total_force(const Json& s, std::size_t obstacles, int i) {
   double sum = component(s, "structure_force", i);
   for (std::size_t k = 0; k < obstacles; ++k) sum += obstacle_force(s, k, i);
@@ -67,6 +74,15 @@ std::vector<Quantity> quantities(const Case& c) {
     q.push_back({"structure_load_y", "N/m", [](const Json& s) { return component(s, "structure_load", 1); }});
   }
   if (!fluid) return q;
+  for (std::size_t k = 0; k < c.output.fluid_probes.size(); ++k) {
+    const std::string name = "fluid_probe_" + std::to_string(k + 1);
+    q.push_back({name + "_p", "Pa", [k](const Json& s) { return fluid_probe(s, k, -1); }});
+    q.push_back({name + "_v_x", "m/s", [k](const Json& s) { return fluid_probe(s, k, 0); }});
+    q.push_back({name + "_v_y", "m/s", [k](const Json& s) { return fluid_probe(s, k, 1); }});
+  }
+  if (c.output.fluid_probes.size() >= 2)  // e.g. the DFG benchmark's Δp
+    q.push_back({"fluid_probe_pressure_difference", "Pa",
+                 [](const Json& s) { return fluid_probe(s, 0, -1) - fluid_probe(s, 1, -1); }});
   const std::size_t obstacles = c.obstacles_given ? c.obstacles.size() : 1;
   for (std::size_t k = 0; k < obstacles; ++k)
     for (int i = 0; i < 2; ++i)

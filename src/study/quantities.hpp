@@ -23,7 +23,9 @@ struct Quantity {
 // structure's force and load. With a fluid: the fluid's force on each obstacle
 // (obstacle_<i>_force_x, _y: SPEC §10's drag and lift) and, with a structure, on the
 // obstacles and the structure together (fluid_force_x, _y: a benchmark's "drag and
-// lift" of a body with a flag).
+// lift" of a body with a flag); at each output.fluid_probes point p, v_x, v_y
+// (fluid_probe_<k>_p, ...) and, with two or more, the first's pressure less the
+// second's (fluid_probe_pressure_difference: the DFG benchmark's Δp).
 std::vector<Quantity> quantities(const Case& c);
 
 }  // namespace fsi

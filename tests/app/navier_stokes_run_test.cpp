@@ -49,6 +49,9 @@ TEST(NavierStokesRun, Dfg2d1DragAndLiftOnACoarseMesh) {
   EXPECT_LE(n["max_final_residual"].get<double>(), 1e-10);
   EXPECT_EQ(s["fluid"]["analyses"], 1);  // one symbolic analysis for every step
   EXPECT_NEAR(s["fluid"]["reynolds"]["value"].get<double>(), 20.0, 1e-9);  // ρ (2 Vmax / 3) D / μ
+  // Δp between the cylinder's front and back points (output.fluid_probes): within 10 %.
+  const double dp = s["fluid_at"][0]["p"].get<double>() - s["fluid_at"][1]["p"].get<double>();
+  EXPECT_NEAR(dp, 0.11752016697, 0.1 * 0.1175);
 }
 
 // The pictures: the whole box and the cylinder's wake, where the flow separates.

@@ -41,6 +41,7 @@ std::string other_value(const std::string& key) {
                                                              {"fluid.right", "outflow"},
                                                              {"fluid.top", "wall"},
                                                              {"output.probes", "[[0.1, 0.01]]"},
+                                                             {"output.fluid_probes", "[[0.1, 0.1]]"},
                                                              {"structure.model", "neo-hookean"},
                                                              {"coupling.force", "large"},
                                                              {"coupling.force_sampling", "2"},

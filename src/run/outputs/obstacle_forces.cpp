@@ -1,22 +1,49 @@
 #include "run/outputs/obstacle_forces.hpp"
 
 #include "common/errors.hpp"
+#include "fem/point_locator.hpp"
+#include "fluid/fluid_field.hpp"
 #include "fluid/stokes_residual.hpp"
 #include "run/case_fields.hpp"
 #include "run/fluid_setup.hpp"
 
 namespace fsi {
 
-Json obstacle_forces_json(const Case& c, FluidSetup& f) {
-  const FluidSolution* s = nullptr;
-  if (f.stokes->has_solution()) {
-    try {
-      s = &f.stokes->solution();  // the far field too: a hole may lie outside the near region
-    } catch (const SolverFailure&) {
-      s = nullptr;
-    }
+namespace {
+
+// The last fluid solution made exact everywhere (a hole or a probe may lie outside the
+// substructured solve's near region), or null.
+const FluidSolution* whole_solution(FluidSetup& f) {
+  if (!f.stokes->has_solution()) return nullptr;
+  try {
+    return &f.stokes->solution();
+  } catch (const SolverFailure&) {
+    return nullptr;
   }
-  return hole_forces_json(c, *f.mesh, s, f.stokes->last_solution_chi() / f.stokes->eps());
+}
+
+}  // namespace
+
+Json obstacle_forces_json(const Case& c, FluidSetup& f) {
+  return hole_forces_json(c, *f.mesh, whole_solution(f), f.stokes->last_solution_chi() / f.stokes->eps());
+}
+
+Json fluid_probes_json(const Case& c, FluidSetup& f) { return fluid_probes_json(c, *f.mesh, whole_solution(f)); }
+
+Json fluid_probes_json(const Case& c, const Mesh& mesh, const FluidSolution* s) {
+  Json list = Json::array();
+  if (c.output.fluid_probes.empty()) return list;
+  const PointLocator locator(mesh);
+  for (const Point& x : c.output.fluid_probes) {
+    Json e = {{"point", point_json(x)}, {"v", nullptr}, {"p", nullptr}};
+    if (s) {
+      const FluidValue value = FluidField(locator, *s).at(locator.locate_or_nearest(x));
+      e["v"] = point_json(value.v);
+      e["p"] = value.p;
+    }
+    list.push_back(e);
+  }
+  return list;
 }
 
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa) {

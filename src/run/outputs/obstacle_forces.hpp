@@ -25,4 +25,10 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f);
 // penalty); the holes labelled Sigma_5_i, or Sigma_5 for [obstacle].
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa);
 
+// summary.json's fluid_at (output.fluid_probes, SPEC §10): [{"point", "v", "p"}, ...],
+// the flow at each probe (bubble included; a probe just off the meshed boundary read at
+// its nearest boundary point); v and p null without a solution.
+Json fluid_probes_json(const Case& c, const Mesh& mesh, const FluidSolution* s);
+Json fluid_probes_json(const Case& c, FluidSetup& f);
+
 }  // namespace fsi

@@ -69,6 +69,10 @@ Json to_json(const OutputParams& o) {
     j["probes"] = Json::array();
     for (const Point& p : o.probes) j["probes"].push_back(point_json(p));
   }
+  if (!o.fluid_probes.empty()) {
+    j["fluid_probes"] = Json::array();
+    for (const Point& p : o.fluid_probes) j["fluid_probes"].push_back(point_json(p));
+  }
   return j;
 }
 
