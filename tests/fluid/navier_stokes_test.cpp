@@ -81,12 +81,12 @@ TEST(NavierStokesMms, MiniElementRatesAtReynolds20) {
   const Flow flow{0.05, 1.0};
   std::vector<testing::StokesErrors> e;
   std::vector<double> h;
-  for (int n : {16, 32, 64, 128}) {
+  for (int n : {8, 16, 32, 64}) {  // (128 takes two minutes in the sanitizers' build)
     h.push_back(1.0 / n);
     e.push_back(solve_mms(n, flow, true));
     std::printf("n %3d  |v|L2 %.3e  |v|H1 %.3e  |p|L2 %.3e\n", n, e.back().v_l2, e.back().v_h1, e.back().p_l2);
   }
-  for (std::size_t k = 1; k + 1 < h.size(); ++k) {  // the first pair is pre-asymptotic at Re 100
+  for (std::size_t k = 1; k + 1 < h.size(); ++k) {  // the first pair is pre-asymptotic
     const double rv = testing::rate(e[k].v_l2, e[k + 1].v_l2, h[k], h[k + 1]);
     const double rg = testing::rate(e[k].v_h1, e[k + 1].v_h1, h[k], h[k + 1]);
     const double rp = testing::rate(e[k].p_l2, e[k + 1].p_l2, h[k], h[k + 1]);
@@ -96,7 +96,7 @@ TEST(NavierStokesMms, MiniElementRatesAtReynolds20) {
     EXPECT_GE(rp, 1.5);
   }
   const testing::StokesErrors without = solve_mms(64, flow, false);
-  EXPECT_GT(without.v_l2, 20 * e[2].v_l2) << "the convection must dominate the error";
+  EXPECT_GT(without.v_l2, 20 * e[3].v_l2) << "the convection must dominate the error";
 }
 
 // Couette flow v = (y, 0), p = 0 lies in the discrete space and solves Navier–Stokes
