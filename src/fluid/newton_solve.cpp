@@ -36,14 +36,17 @@ void NewtonSolve::new_run() {
 // Assembles K(w) and b(w) in Newton's form (the next step reuses them) and returns
 // ‖K(w) x_w − b(w)‖ and its scale max(‖b(0)‖, ‖b(w)‖): the data, or the inertia's
 // share of the right-hand side where it is the larger (round-off grows with it).
-NewtonSolve::Residual NewtonSolve::residual(const Eigen::VectorXd& chi, double eps) {
-  const double b0 = scale(chi, eps);
+// At rest (w = 0) this assembly is b(0)'s own: the scale is read from it instead of
+// being assembled apart.
+NewtonSolve::Residual NewtonSolve::residual(const Eigen::VectorXd& chi, double eps, bool at_rest) {
+  const double b0 = at_rest ? 0.0 : scale(chi, eps);
   const Stopwatch clock;
   convection_->set_picard(false);
   assembler_.forget_assembly();
   assembler_.assemble(chi, eps);
+  if (at_rest && !(scale_ > 0)) scale_ = assembler_.rhs().norm();
   const Residual r{(assembler_.matrix() * assembler_.reduced(w_) - assembler_.rhs()).norm(),
-                   std::max(b0, assembler_.rhs().norm())};
+                   std::max(at_rest ? scale_ : b0, assembler_.rhs().norm())};
   timing_.assembly += clock.elapsed();
   return r;
 }
@@ -109,7 +112,7 @@ void NewtonSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles
   if (!started_) set_zero(w_);  // the first step is the Stokes solution
   report_.residuals.clear();
   report_.steps = report_.picard_steps = report_.rejected = report_.damped = 0;
-  Residual r = residual(chi, eps);
+  Residual r = residual(chi, eps, !started_);
   for (int k = 0;; ++k) {
     report_.residuals.push_back(r.relative());
     if (r.relative() <= options_.tol) break;

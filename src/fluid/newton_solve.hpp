@@ -66,7 +66,7 @@ class NewtonSolve final : public StokesSolveStrategy {
     double norm, scale;
     double relative() const { return scale > 0 ? norm / scale : norm; }
   };
-  Residual residual(const Eigen::VectorXd& chi, double eps);
+  Residual residual(const Eigen::VectorXd& chi, double eps, bool at_rest = false);
   double scale(const Eigen::VectorXd& chi, double eps);
   Residual step(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled, const Residual& r);
   [[noreturn]] void fail() const;
