@@ -1,23 +1,26 @@
 #!/usr/bin/env bash
 # Speed and memory of fsicontact against FreeFem++ on the DFG benchmark 2D-1 (steady flow
-# past a cylinder at Re = 20, Schäfer & Turek 1996; issue 29, "Speed"). For each of two
-# mesh sizes it runs FreeFem++ on bench/freefem/dfg_2d1.edp (P1b/P1, Newton from rest,
+# past a cylinder at Re = 20, Schäfer & Turek 1996; issue 29, "Speed"). For each
+# mesh size (and mesher) it runs FreeFem++ on bench/freefem/dfg_2d1.edp (P1b/P1, Newton from rest,
 # UMFPACK) and fsicontact on cases/dfg-2d1.toml, interleaved (F, f, F, f, ...), REPS times
 # each, every run under /usr/bin/time -f '%e %M' (wall s, peak RSS kB), and prints a
 # markdown table: triangles, median wall time, median peak memory, C_D, C_L, Δp of each tool
 # and FreeFem++ / fsicontact ratios. Also writes DIR/compare_dfg.csv (every run).
 #
-#   bench/compare_freefem_dfg.sh [--reps 3] [--out DIR] [--sizes N:H,N:H] [--report-only]
+#   bench/compare_freefem_dfg.sh [--reps 3] [--out DIR] [--sizes N:H[:MESHER],...] [--report-only]
 #
 #   --reps         runs of each tool at each size (default 3)
 #   --out          output directory (default out/compare-freefem-dfg)
 #   --sizes        pairs of FreeFem++ -n and fsicontact fluid.h giving the same number of
-#                  triangles within ~1 % (default 100:0.0135,202:0.0065: FreeFem++ 25 918 and
-#                  104 978, fsicontact 25 760 and 105 544 triangles)
+#                  triangles within ~1 %, each optionally with fsicontact's fluid.mesher as
+#                  a third field (N:H:lattice; default the case's gmsh). Default
+#                  100:0.0135,100:0.0128:lattice,202:0.0065,202:0.0061:lattice: FreeFem++
+#                  25 918 and 104 978 triangles; fsicontact 25 760 and 105 544 (gmsh),
+#                  26 099 and 106 267 (lattice)
 #   --report-only  rebuild the table from the outputs already in DIR, run nothing
 #
 # fsicontact is run as
-#   $FSICONTACT run cases/dfg-2d1.toml --set fluid.h=H --set fluid.h_near=H/4 --out DIR \
+#   $FSICONTACT run cases/dfg-2d1.toml --set fluid.h=H --set fluid.h_near=H/4 --set fluid.mesher=MESHER --out DIR \
 #       --set output.png=false --set output.vtu=false
 # fluid.h_near (the band box around the cylinder and its wake; 0.005 in the case, with
 # h = 0.02) follows h at the case's ratio 1/4, as FreeFem++'s cylinder (-cyl 4): h_near
@@ -36,7 +39,7 @@ if [[ -n ${FSICONTACT:-} ]]; then BIN=$FSICONTACT
 elif [[ -x build/fsicontact ]]; then BIN=build/fsicontact
 else BIN=build/app/fsicontact; fi
 FREEFEM=${FREEFEM:-FreeFem++}
-REPS=3 OUT=out/compare-freefem-dfg SIZES=100:0.0135,202:0.0065 REPORT_ONLY=0
+REPS=3 OUT=out/compare-freefem-dfg SIZES=100:0.0135,100:0.0128:lattice,202:0.0065,202:0.0061:lattice REPORT_ONLY=0
 usage() { echo "usage: $0 [--reps 3] [--out DIR] [--sizes N:H,N:H] [--report-only]" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -44,7 +47,7 @@ while [[ $# -gt 0 ]]; do
     --out) [[ $# -ge 2 ]] || usage; OUT=$2; shift 2 ;;
     --sizes) [[ $# -ge 2 ]] || usage; SIZES=$2; shift 2 ;;
     --report-only) REPORT_ONLY=1; shift ;;
-    -h|--help) sed -n '2,31p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^[^#]/p' "$0" | sed '$d'; exit 0 ;;
     *) usage ;;
   esac
 done
@@ -66,19 +69,20 @@ if [[ $REPORT_ONLY -eq 0 ]]; then
   rm -f "$OUT"/*.time "$OUT"/*.log
   IFS=, read -r -a pairs <<< "$SIZES"
   for pair in "${pairs[@]}"; do
-    n=${pair%%:*} h=${pair##*:}
+    IFS=: read -r n h mesher <<< "$pair"
+    mesher=${mesher:-gmsh}
     hn=$(python3 -c "print(repr($h / 4))")
     for rep in $(seq 1 "$REPS"); do
-      tag="n$n-h$h-$rep"
+      tag="n$n-h$h-$mesher-$rep"
       set +e
       (cd "$OUT" && /usr/bin/time -f '%e %M' -o "freefem-$tag.time" "$FREEFEM" -nw -v 0 "$EDP" -n "$n" \
         > "freefem-$tag.log" 2>&1)
       echo "FreeFem++ -n $n, run $rep: exit $?, $(cat "$OUT/freefem-$tag.time" | tail -1) (s kB); $(grep -h '^RESULT' "$OUT/freefem-$tag.log" | cut -c1-150)" >&2
       rm -rf "$OUT/fsicontact-$tag"
       /usr/bin/time -f '%e %M' -o "$OUT/fsicontact-$tag.time" "$BIN" run cases/dfg-2d1.toml \
-        --set fluid.h="$h" --set fluid.h_near="$hn" --out "$OUT/fsicontact-$tag" \
+        --set fluid.h="$h" --set fluid.h_near="$hn" --set fluid.mesher="$mesher" --out "$OUT/fsicontact-$tag" \
         --set output.png=false --set output.vtu=false > "$OUT/fsicontact-$tag.log" 2>&1
-      echo "fsicontact h = $h, run $rep: exit $?, $(cat "$OUT/fsicontact-$tag.time" | tail -1) (s kB); $(tail -c 300 "$OUT/fsicontact-$tag.log" | tr '\n' ' ' | cut -c1-150)" >&2
+      echo "fsicontact h = $h ($mesher), run $rep: exit $?, $(cat "$OUT/fsicontact-$tag.time" | tail -1) (s kB); $(tail -c 300 "$OUT/fsicontact-$tag.log" | tr '\n' ' ' | cut -c1-150)" >&2
       set -e
     done
   done
@@ -130,13 +134,14 @@ def read_fsicontact(d):
 
 rows, runs = [], []
 for pair in sizes.split(","):
-    n, h = pair.split(":")
-    row = {"n": n, "h": h}
+    n, h, *rest = pair.split(":")
+    mesher = rest[0] if rest else "gmsh"
+    row = {"n": n, "h": h, "mesher": mesher}
     for tool in ("freefem", "fsicontact"):
         walls, peaks, res = [], [], None
         rep = 1
         while True:
-            tag = f"n{n}-h{h}-{rep}"
+            tag = f"n{n}-h{h}-{mesher}-{rep}"
             t = read_time(os.path.join(out, f"{tool}-{tag}.time"))
             if t is None and not os.path.exists(os.path.join(out, f"{tool}-{tag}.time")):
                 break
@@ -144,7 +149,7 @@ for pair in sizes.split(","):
                 else read_fsicontact(os.path.join(out, f"{tool}-{tag}"))
             if t is not None and r is not None:
                 walls.append(t[0]); peaks.append(t[1]); res = r
-            runs.append({"tool": tool, "n": n, "h": h, "rep": rep, "ok": t is not None and r is not None,
+            runs.append({"tool": tool, "n": n, "h": h, "mesher": mesher, "rep": rep, "ok": t is not None and r is not None,
                          "wall_s": t[0] if t else "", "peak_MB": t[1] if t else "", **(r or {})})
             rep += 1
         row[tool] = None if res is None else {**res, "wall": statistics.median(walls),
@@ -158,13 +163,13 @@ def get(r, k):
 def ratio(a, b):
     return None if a is None or b is None or b == 0 else a / b
 
-print("| triangles FreeFem++ / fsicontact | wall s FreeFem++ | wall s fsicontact | wall ratio "
+print("| fsicontact's mesher | triangles FreeFem++ / fsicontact | wall s FreeFem++ | wall s fsicontact | wall ratio "
       "| peak MB FreeFem++ | peak MB fsicontact | memory ratio | C_D FreeFem++ | C_D fsicontact "
       "| C_L FreeFem++ | C_L fsicontact | Δp FreeFem++ | Δp fsicontact | Newton steps FreeFem++ / fsicontact |")
-print("|" + "---|" * 14)
+print("|" + "---|" * 15)
 for row in rows:
     F, f = row["freefem"], row["fsicontact"]
-    print(f"| {g(get(F, 'triangles'), '{}')} / {g(get(f, 'triangles'), '{}')} "
+    print(f"| {row['mesher']} | {g(get(F, 'triangles'), '{}')} / {g(get(f, 'triangles'), '{}')} "
           f"| {g(get(F, 'wall'), '{:.2f}')} | {g(get(f, 'wall'), '{:.2f}')} "
           f"| {g(ratio(get(F, 'wall'), get(f, 'wall')), '{:.1f}×')} "
           f"| {g(get(F, 'peak'), '{:.0f}')} | {g(get(f, 'peak'), '{:.0f}')} "
@@ -173,10 +178,10 @@ for row in rows:
           f"| {g(get(F, 'CL'), '{:.5f}')} | {g(get(f, 'CL'), '{:.5f}')} "
           f"| {g(get(F, 'dp'), '{:.5f}')} | {g(get(f, 'dp'), '{:.5f}')} "
           f"| {g(get(F, 'newton_steps'), '{}')} / {g(get(f, 'newton_steps'), '{}')} |")
-print(f"| reference (Schäfer & Turek; John 2004) | | | | | | | {REF_CD:.5f} | {REF_CD:.5f} "
+print(f"| reference (Schäfer & Turek; John 2004) | | | | | | | | {REF_CD:.5f} | {REF_CD:.5f} "
       f"| {REF_CL:.5f} | {REF_CL:.5f} | {REF_DP:.5f} | {REF_DP:.5f} | |")
 nr = {row[t]["runs"] for row in rows for t in ("freefem", "fsicontact") if row[t]}
-sz = ", ".join(f"FreeFem++ -n {row['n']} / fsicontact fluid.h = {row['h']}" for row in rows)
+sz = ", ".join(f"FreeFem++ -n {row['n']} / fsicontact fluid.h = {row['h']} ({row['mesher']})" for row in rows)
 print(f"\nMedians of {'/'.join(str(x) for x in sorted(nr)) or 0} runs per tool and size, interleaved, "
       f"each a whole process under /usr/bin/time (wall clock; peak RSS); ratios are FreeFem++ / fsicontact. "
       f"Sizes: {sz} (h_near = h/4). C_D = 500 F_x, C_L = 500 F_y (fsicontact: summary.json's obstacles[0].force; "
@@ -193,7 +198,7 @@ for row in rows:
               f"assembly {F['assembly_s']:.2f} s, factorisation and solve {F['solve_s']:.2f} s, "
               f"total {F['internal_s']:.2f} s.")
 
-cols = ["tool", "n", "h", "rep", "ok", "wall_s", "peak_MB", "triangles", "CD", "CL", "dp", "newton_steps",
+cols = ["tool", "n", "h", "mesher", "rep", "ok", "wall_s", "peak_MB", "triangles", "CD", "CL", "dp", "newton_steps",
         "internal_s", "assembly_s", "solve_s"]
 with open(os.path.join(out, "compare_dfg.csv"), "w", newline="") as fh:
     w = csv.DictWriter(fh, fieldnames=cols, extrasaction="ignore")

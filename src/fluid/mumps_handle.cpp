@@ -1,6 +1,7 @@
 #include "fluid/mumps_handle.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -113,6 +114,23 @@ void MumpsHandle::check(const char* phase) const {
 
 int MumpsHandle::factorize_numeric() {
   for (int attempt = 0;; ++attempt) {
+    if (keep_workspace_) {
+      // INFO(8): S's estimated size after the analysis (entries; negative: millions),
+      // ICNTL(14)'s margin included; doubled at each retry. LWK_USER counts millions
+      // when negative too (a 32-bit integer).
+      const double needed = entries(id_.info[7]) * std::pow(2.0, attempt);
+      const bool millions = needed > 2e9;
+      const double size = millions ? 1e6 * std::ceil(needed / 1e6) : std::ceil(needed);
+      if (static_cast<double>(workspace_size_) < size) {
+        workspace_.reset();  // the old one freed before the new is allocated
+        workspace_size_ = static_cast<std::size_t>(size);
+        workspace_ = std::make_unique_for_overwrite<double[]>(workspace_size_);  // MUMPS writes before it reads
+      }
+      id_.wk_user = workspace_.get();
+      const std::size_t have = workspace_size_;
+      id_.lwk_user = static_cast<MUMPS_INT>(have > 2000000000 ? -static_cast<long long>(have / 1000000)
+                                                                 : static_cast<long long>(have));
+    }
     id_.job = 2;
     dmumps_c(&id_);
     const int status = id_.info[0];

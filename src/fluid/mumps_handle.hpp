@@ -6,6 +6,7 @@
 
 #include <dmumps_c.h>
 
+#include <memory>
 #include <string>
 
 namespace fsi {
@@ -38,9 +39,18 @@ class MumpsHandle {
   // pivots past the analysis's estimate, up to 4 times. Returns INFO(1) unchecked,
   // so that the caller can word the singular case (−10) for its matrix.
   int factorize_numeric();
+  // From now on the factorisation's main workspace S (its fronts and factors) is
+  // this handle's own array (MUMPS's WK_USER), sized from the analysis's estimate
+  // INFO(8) and kept from one factorisation to the next. MUMPS otherwise allocates
+  // and frees those hundreds of MB at every factorisation, and the kernel maps and
+  // zeroes every page again: a Newton solve refactorises 5 times and more.
+  void keep_workspace() { keep_workspace_ = true; }
 
  private:
   std::string who_;
+  bool keep_workspace_ = false;
+  std::unique_ptr<double[]> workspace_;  // WK_USER while keep_workspace_
+  std::size_t workspace_size_ = 0;
   DMUMPS_STRUC_C id_{};
   bool initialised_ = false;
 };

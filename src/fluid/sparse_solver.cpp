@@ -243,6 +243,7 @@ class MumpsSolver final : public SparseDirectSolver {
         mumps_(name_ + ": MUMPS ", symmetric ? 2 : 0) {
     if (symmetric) icntl(12) = 1;  // plain ordering of the pattern: the analysis ignores the values
     icntl(7) = ordering == Ordering::metis || ordering == Ordering::given ? 1 : ordering == Ordering::pord ? 4 : 0;
+    mumps_.keep_workspace();
   }
   std::string name() const override { return name_; }
   FactorStatistics statistics() const override {

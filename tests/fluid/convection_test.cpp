@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "fem/quadrature.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "io/case.hpp"
 #include "run/fluid_setup.hpp"
@@ -99,6 +100,46 @@ TEST(NewtonConvection, TheJacobianIsTheLoadsDerivativeBubblesIncluded) {
   EXPECT_LT((J * d - dL).cwiseAbs().maxCoeff(), 1e-12 * scale);
   EXPECT_LT((J * c - 2 * L).cwiseAbs().maxCoeff(), 1e-12 * L.cwiseAbs().maxCoeff());  // Euler: quadratic
   EXPECT_GT((J - J.transpose()).norm(), 1e-3 * J.norm());  // convection is not symmetric
+}
+
+// The tabulated contractions of NewtonConvection against the plain quadrature of
+// their definitions on the 8 vector basis functions (mini_velocity_basis, the
+// degree-8 rule): Newton's Jacobian, Picard's and the load, for a random field with
+// bubbles, to round-off.
+TEST(NewtonConvection, ItsTablesEqualTheQuadratureOfTheVectorBasis) {
+  const OneTriangle one;
+  const P1Triangle T = one.T();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-1, 1);
+  Vector8d c;
+  for (int i = 0; i < 8; ++i) c[i] = U(rng);
+  c.tail<2>() *= 20;
+  const double rho = 0.7;
+  const FluidSolution w = one.field(c);
+  Eigen::Matrix<double, 8, 8> newton = Eigen::Matrix<double, 8, 8>::Zero(), picard = newton;
+  Vector8d load = Vector8d::Zero();
+  const TriangleRule rule = triangle_rule(8);
+  for (std::size_t q = 0; q < rule.w.size(); ++q) {
+    const MiniVelocityBasis B = mini_velocity_basis(T, rule.lambda[q]);
+    Eigen::Vector2d wq = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d grad_w = Eigen::Matrix2d::Zero();  // row c: ∇w_c
+    for (int j = 0; j < 8; ++j) wq += c[j] * B.value[j], grad_w += c[j] * B.grad[j];
+    const double dx = rho * rule.w[q] * T.area;
+    for (int i = 0; i < 8; ++i) {
+      load[i] += dx * B.value[i].dot(grad_w * wq);
+      for (int j = 0; j < 8; ++j) {
+        const double advect = B.value[i].dot(B.grad[j] * wq);  // φ_i·(w·∇)φ_j
+        picard(i, j) += dx * advect;
+        newton(i, j) += dx * (advect + B.value[i].dot(grad_w * B.value[j]));  // + φ_i·(φ_j·∇)w
+      }
+    }
+  }
+  NewtonConvection term(rho, one.mesh, w);
+  EXPECT_LT((jacobian_of(term, T) - newton).cwiseAbs().maxCoeff(), 1e-13 * newton.cwiseAbs().maxCoeff());
+  EXPECT_LT((load_of(term, T) - load).cwiseAbs().maxCoeff(), 1e-13 * load.cwiseAbs().maxCoeff());
+  term.set_picard(true);
+  EXPECT_LT((jacobian_of(term, T) - picard).cwiseAbs().maxCoeff(), 1e-13 * picard.cwiseAbs().maxCoeff());
+  EXPECT_EQ(load_of(term, T).norm(), 0.0);  // Oseen's system: the Stokes load alone
 }
 
 // Newton's method for the steady Navier–Stokes equations of the paper's box (no
