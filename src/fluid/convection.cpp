@@ -3,18 +3,6 @@
 #include "fem/quadrature.hpp"
 
 namespace fsi {
-namespace {
-
-// w's 8 coefficients on triangle t in the basis order of mini_velocity_basis.
-Eigen::Matrix<double, 8, 1> local_coefficients(const Mesh& mesh, const FluidSolution& w, int t) {
-  Eigen::Matrix<double, 8, 1> c;
-  const auto& tri = mesh.triangles[t];
-  for (int a = 0; a < 3; ++a) c[a] = w.v1[tri[a]], c[3 + a] = w.v2[tri[a]];
-  c[6] = w.bubble(0, t), c[7] = w.bubble(1, t);
-  return c;
-}
-
-}  // namespace
 
 MiniVelocityBasis mini_velocity_basis(const P1Triangle& T, const Eigen::Vector3d& l) {
   MiniVelocityBasis B;
@@ -102,7 +90,7 @@ int vector_index(int k, int c) { return k < 3 ? 3 * c + k : 6 + c; }
 
 // J[(c,k),(d,l)] = ρ ∫ s_k [δ_cd (w·∇)s_l + s_l ∂_d w_c]: (w·∇)φ_j + (φ_j·∇)w tested with φ_i.
 void NewtonConvection::add(int t, const P1Triangle& T, MiniLocal& e) const {
-  const Eigen::Matrix<double, 4, 2> C = scalar_coefficients(local_coefficients(mesh_, w_, t));
+  const Eigen::Matrix<double, 4, 2> C = scalar_coefficients(velocity_coefficients(mesh_, w_, t));
   const Eigen::Matrix4d A = advection(rho_, T, C);
   Eigen::Matrix<double, 16, 4> S = Eigen::Matrix<double, 16, 4>::Zero();  // column 2c + d: ∫ s_k s_l ∂_d w_c
   if (!picard_) {
@@ -129,7 +117,7 @@ void NewtonConvection::add(int t, const P1Triangle& T, MiniLocal& e) const {
 // ρ ∫ s_k (w·∇)w_c = Σ_l A(k, l) c_l,c: the advection matrix applied to w itself.
 void NewtonConvection::add_load(int t, const P1Triangle& T, ElementLoad& load) const {
   if (picard_) return;  // Oseen's system has the Stokes load alone
-  const Eigen::Matrix<double, 4, 2> C = scalar_coefficients(local_coefficients(mesh_, w_, t));
+  const Eigen::Matrix<double, 4, 2> C = scalar_coefficients(velocity_coefficients(mesh_, w_, t));
   const Eigen::Matrix<double, 4, 2> N = advection(rho_, T, C) * C;  // row k, column c
   for (int cc = 0; cc < 2; ++cc) {
     load.F_V.segment<3>(3 * cc) += N.col(cc).head<3>();

@@ -71,6 +71,10 @@ void PenalisedStokes::set_body_force(const VectorField& f) {
   change_problem([&] { assembler_.set_body_force(f); });
 }
 
+void PenalisedStokes::set_boundary_data(const FluidBoundaryConditions& bc) {
+  change_problem([&] { assembler_.set_boundary_data(bc); });
+}
+
 void PenalisedStokes::add_term(std::shared_ptr<const ElementTerm> term) {
   change_problem([&] { assembler_.add_term(std::move(term)); });
 }

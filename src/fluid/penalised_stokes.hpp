@@ -57,6 +57,8 @@ class PenalisedStokes {
   void set_eps(double eps);
   // A new body force f_F (the same χ may follow: the next solve solves again).
   void set_body_force(const VectorField& f);
+  // New boundary data on the same labels (StokesAssembler::set_boundary_data).
+  void set_boundary_data(const FluidBoundaryConditions& bc);
   // The viscous term's form (SPEC §10 fluid.viscous_form): a new version.
   void set_viscous_form(ViscousForm form);
   ViscousForm viscous_form() const { return assembler_.viscous_form(); }

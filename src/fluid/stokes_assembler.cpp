@@ -49,20 +49,8 @@ StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField&
   set_body_force(f);
 
   // Prescribed velocities on the Dirichlet labels.
-  z_fixed_ = Eigen::VectorXd::Zero(3 * nv);
   std::vector<bool> fixed(3 * nv, false);
-  for (int label : bc.dirichlet_labels) {
-    const VectorField* value = &bc.g;
-    for (const auto& [l, g] : bc.dirichlet_values)
-      if (l == label) value = &g;
-    for (int v : mesh.vertices_on(label)) {
-      const Point g = (*value)(mesh.vertices[v]);
-      for (int c = 0; c < 2; ++c) {
-        fixed[c * nv + v] = true;
-        z_fixed_[c * nv + v] = g[c];
-      }
-    }
-  }
+  z_fixed_ = prescribed_values(mesh, bc, fixed);
   free_index_.assign(3 * nv, -1);
   for (int d = 0; d < 3 * nv; ++d)
     if (!fixed[d]) {
@@ -79,21 +67,56 @@ StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField&
         for (int i : adjacent[free_[col] % nv])
           if (free_index_[component * nv + i] >= 0) ++nonzeros_;
   }
-  const int n = static_cast<int>(free_.size());
+  traction_load_ = traction_load(bc);
+}
 
-  // Natural boundary: ∫_{edge} h·w ds (bubbles vanish on edges).
-  traction_load_ = Eigen::VectorXd::Zero(n);
+// The prescribed velocities of bc at every dof (0 elsewhere), marking the fixed ones.
+Eigen::VectorXd StokesAssembler::prescribed_values(const Mesh& mesh, const FluidBoundaryConditions& bc,
+                                                   std::vector<bool>& fixed) {
+  const int nv = mesh.num_vertices();
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(3 * nv);
+  for (int label : bc.dirichlet_labels) {
+    const VectorField* value = &bc.g;
+    for (const auto& [l, g] : bc.dirichlet_values)
+      if (l == label) value = &g;
+    for (int v : mesh.vertices_on(label)) {
+      const Point g = (*value)(mesh.vertices[v]);
+      for (int c = 0; c < 2; ++c) {
+        fixed[c * nv + v] = true;
+        z[c * nv + v] = g[c];
+      }
+    }
+  }
+  return z;
+}
+
+// Natural boundary: ∫_{edge} h·w ds on the reduced dofs (bubbles vanish on edges).
+Eigen::VectorXd StokesAssembler::traction_load(const FluidBoundaryConditions& bc) const {
+  const int nv = mesh_.num_vertices();
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_.size()));
   for (const auto& traction : bc.tractions) {
     const auto& h = traction.second;  // a structured binding: clang 14 cannot capture it
-    integrate_on_edges(mesh, mesh.edges_on(traction.first), gauss_legendre(3), [&](const BoundaryEdge& e, const EdgePoint& q) {
+    integrate_on_edges(mesh_, mesh_.edges_on(traction.first), gauss_legendre(3), [&](const BoundaryEdge& e, const EdgePoint& q) {
       const Point hq = h(q.x) * q.ds;
       for (int c = 0; c < 2; ++c) {
         const int r0 = free_index_[c * nv + e.v[0]], r1 = free_index_[c * nv + e.v[1]];
-        if (r0 >= 0) traction_load_[r0] += hq[c] * q.phi[0];
-        if (r1 >= 0) traction_load_[r1] += hq[c] * q.phi[1];
+        if (r0 >= 0) load[r0] += hq[c] * q.phi[0];
+        if (r1 >= 0) load[r1] += hq[c] * q.phi[1];
       }
     });
   }
+  return load;
+}
+
+void StokesAssembler::set_boundary_data(const FluidBoundaryConditions& bc) {
+  std::vector<bool> fixed(z_fixed_.size(), false);
+  Eigen::VectorXd z = prescribed_values(mesh_, bc, fixed);
+  for (std::size_t d = 0; d < fixed.size(); ++d)
+    if (fixed[d] != (free_index_[d] < 0))
+      throw std::invalid_argument("set_boundary_data: the velocity must be prescribed on the same labels as before");
+  z_fixed_ = std::move(z);
+  traction_load_ = traction_load(bc);
+  assembled_ = false;  // the lifted columns and the tractions are in rhs_
 }
 
 void StokesAssembler::build_whole_pattern() {

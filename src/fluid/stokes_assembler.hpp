@@ -40,6 +40,17 @@ struct FluidSolution {
   const std::vector<char>* exact_on = nullptr;
 };
 
+// A state's 8 velocity coefficients on triangle t in the mini space's basis order
+// (v1 at its 3 vertices, v2 at the 3, then the bubble's 2): what a term that depends
+// on a velocity (convection, the time derivative's history) reads.
+inline Eigen::Matrix<double, 8, 1> velocity_coefficients(const Mesh& mesh, const FluidSolution& s, int t) {
+  Eigen::Matrix<double, 8, 1> c;
+  const auto& tri = mesh.triangles[t];
+  for (int a = 0; a < 3; ++a) c[a] = s.v1[tri[a]], c[3 + a] = s.v2[tri[a]];
+  c[6] = s.bubble(0, t), c[7] = s.bubble(1, t);
+  return c;
+}
+
 // Local dof k (0..8 = v1×3, v2×3, p×3) of triangle `tri` → full dof index.
 inline int fluid_dof(const std::array<int, 3>& tri, int k, int nv) {
   return (k / 3) * nv + tri[k % 3];
@@ -60,6 +71,10 @@ class StokesAssembler {
   ViscousForm viscous_form() const { return form_; }
   // A new body force f (its element loads); the next assemble() assembles everything.
   void set_body_force(const VectorField& f);
+  // New boundary data on the same labels: the prescribed velocities' values and the
+  // tractions (an inflow or a load that changes in time, SPEC §12); the next assemble()
+  // assembles everything. std::invalid_argument if another set of dofs is prescribed.
+  void set_boundary_data(const FluidBoundaryConditions& bc);
   // A further term of every element (mini_element.hpp ElementTerm: convection); the
   // next assemble() assembles everything. A term whose data change (a new velocity to
   // linearise about) needs forget_assembly() before the next assemble(): the update
@@ -106,6 +121,9 @@ class StokesAssembler {
   const std::vector<int>& dof_rank();
 
  private:
+  static Eigen::VectorXd prescribed_values(const Mesh& mesh, const FluidBoundaryConditions& bc,
+                                           std::vector<bool>& fixed);
+  Eigen::VectorXd traction_load(const FluidBoundaryConditions& bc) const;
   void build_whole_pattern();
   void add_element(int t, double kappa, double sign);
   // Triangle t's local system with the penalty κ: the Stokes terms and the added ones;

@@ -1,0 +1,44 @@
+#include "fluid/fluid_time_stepper.hpp"
+
+#include <stdexcept>
+
+namespace fsi {
+
+FluidSolution fluid_at_rest(const Mesh& mesh) {
+  FluidSolution s;
+  s.v1 = Eigen::VectorXd::Zero(mesh.num_vertices());
+  s.v2 = Eigen::VectorXd::Zero(mesh.num_vertices());
+  s.p = Eigen::VectorXd::Zero(mesh.num_vertices());
+  s.bubble = Eigen::Matrix2Xd::Zero(2, mesh.num_triangles());
+  return s;
+}
+
+FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeScheme scheme, double dt,
+                                   const FluidSolution& initial, double t0)
+    : fluid_(fluid),
+      scheme_(scheme),
+      dt_(dt),
+      t_(t0),
+      derivative_(std::make_shared<FluidTimeDerivative>(rho, fluid.mesh())),
+      v_n_(std::make_unique<FluidSolution>(initial)),
+      v_nm1_(std::make_unique<FluidSolution>(initial)) {
+  if (!(dt > 0)) throw std::invalid_argument("FluidTimeStepper: the time step must be positive");
+  v_n_->exact_on = v_nm1_->exact_on = nullptr;
+  fluid_.add_term(derivative_);
+}
+
+const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& data) {
+  if (data) data(t_ + dt_);
+  const BdfWeights w = bdf_weights(scheme_, steps_);
+  derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
+  fluid_.terms_changed();
+  const FluidSolution& v = fluid_.solve();
+  std::swap(v_n_, v_nm1_);
+  *v_n_ = v;
+  v_n_->exact_on = nullptr;
+  t_ += dt_;
+  ++steps_;
+  return *v_n_;
+}
+
+}  // namespace fsi

@@ -1,0 +1,46 @@
+// The fluid marched in time on its fixed mesh (SPEC §12): each step sets the data at
+// t^{n+1} (a callback: body force, inflow, tractions, χ), the time derivative's
+// history (FluidTimeDerivative, BDF1 or BDF2), and solves the steady operator plus
+// ρα/Δt once: Stokes by one factorisation, Navier–Stokes by Newton's method from the
+// last step's solution (PenalisedStokes::set_navier_stokes, before the first step).
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "fluid/penalised_stokes.hpp"
+#include "fluid/time_derivative.hpp"
+
+namespace fsi {
+
+// A state at rest with `fluid`'s prescribed values (v = 0 elsewhere, p = 0).
+FluidSolution fluid_at_rest(const Mesh& mesh);
+
+class FluidTimeStepper {
+ public:
+  // Adds the time derivative to `fluid` (kept referenced) and starts from `initial` at t0.
+  FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeScheme scheme, double dt, const FluidSolution& initial,
+                   double t0 = 0);
+  FluidTimeStepper(const FluidTimeStepper&) = delete;
+  FluidTimeStepper& operator=(const FluidTimeStepper&) = delete;
+
+  // The solution at t + Δt, which becomes v^n. `data(t_next)` first sets what depends
+  // on time (may be empty). Throws SolverFailure (the state stays at t).
+  const FluidSolution& step(const std::function<void(double)>& data = {});
+
+  double time() const { return t_; }
+  int steps() const { return steps_; }
+  double dt() const { return dt_; }
+  const FluidSolution& state() const { return *v_n_; }
+
+ private:
+  PenalisedStokes& fluid_;
+  TimeScheme scheme_;
+  double dt_, t_;
+  int steps_ = 0;
+  std::shared_ptr<FluidTimeDerivative> derivative_;
+  // v^n and v^{n−1}: two buffers swapped at each accepted step.
+  std::unique_ptr<FluidSolution> v_n_, v_nm1_;
+};
+
+}  // namespace fsi
