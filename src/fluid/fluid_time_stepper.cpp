@@ -21,7 +21,8 @@ FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeSchem
       t_(t0),
       derivative_(std::make_shared<FluidTimeDerivative>(rho, fluid.mesh())),
       v_n_(std::make_unique<FluidSolution>(initial)),
-      v_nm1_(std::make_unique<FluidSolution>(initial)) {
+      v_nm1_(std::make_unique<FluidSolution>(initial)),
+      spare_(std::make_unique<FluidSolution>()) {
   if (!(dt > 0)) throw std::invalid_argument("FluidTimeStepper: the time step must be positive");
   v_n_->exact_on = v_nm1_->exact_on = nullptr;
   fluid_.add_term(derivative_);
@@ -32,10 +33,10 @@ const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& d
   const BdfWeights w = bdf_weights(scheme_, steps_);
   derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
   fluid_.terms_changed();
-  const FluidSolution& v = fluid_.solve();
+  *spare_ = fluid_.solve();
+  spare_->exact_on = nullptr;
+  std::swap(v_nm1_, spare_);  // (v^n, v^{n−1}, spare) ← (new, v^n, v^{n−1})
   std::swap(v_n_, v_nm1_);
-  *v_n_ = v;
-  v_n_->exact_on = nullptr;
   t_ += dt_;
   ++steps_;
   return *v_n_;

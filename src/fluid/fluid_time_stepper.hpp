@@ -32,6 +32,9 @@ class FluidTimeStepper {
   int steps() const { return steps_; }
   double dt() const { return dt_; }
   const FluidSolution& state() const { return *v_n_; }
+  // ρ∂v/∂t of the last step taken, its history kept: the residual forces at state()
+  // need it (MomentumModel::inertia). Null before the first step.
+  const FluidTimeDerivative* last_step_inertia() const { return steps_ > 0 ? derivative_.get() : nullptr; }
 
  private:
   PenalisedStokes& fluid_;
@@ -39,8 +42,9 @@ class FluidTimeStepper {
   double dt_, t_;
   int steps_ = 0;
   std::shared_ptr<FluidTimeDerivative> derivative_;
-  // v^n and v^{n−1}: two buffers swapped at each accepted step.
-  std::unique_ptr<FluidSolution> v_n_, v_nm1_;
+  // v^n, v^{n−1}, and the buffer the next solution goes to (the last step's v^{n−1},
+  // which its time derivative still reads until the next step).
+  std::unique_ptr<FluidSolution> v_n_, v_nm1_, spare_;
 };
 
 }  // namespace fsi

@@ -27,6 +27,10 @@ Eigen::Matrix2Xd momentum_residual(const Mesh& mesh, const MomentumModel& model,
       convection.add(t, T, local);
       convection.add_load(t, T, load);
     }
+    if (model.inertia) {
+      model.inertia->add(t, T, local);
+      model.inertia->add_load(t, T, load);
+    }
     const CondensedElement e = condense(local, load);
     Vector9d z;  // [v1 at the 3 vertices, v2, p]
     for (int a = 0; a < 3; ++a)

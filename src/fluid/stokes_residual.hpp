@@ -28,6 +28,9 @@ struct MomentumModel {
   double mu;
   ViscousForm form = ViscousForm::symmetric;
   double rho = 0;
+  // An unsteady step's ρ∂v/∂t (SPEC §12: FluidTimeDerivative with that step's
+  // history, FluidTimeStepper::last_step_inertia), part of the residual; null: steady.
+  const ElementTerm* inertia = nullptr;
 };
 
 // Column k: (R_{i,1}, R_{i,2}) for i = vertices[k]. Only the triangles around these
