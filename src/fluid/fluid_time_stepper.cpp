@@ -18,6 +18,7 @@ FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeSchem
     : fluid_(fluid),
       scheme_(scheme),
       dt_(dt),
+      t0_(t0),
       t_(t0),
       derivative_(std::make_shared<FluidTimeDerivative>(rho, fluid.mesh())),
       v_n_(std::make_unique<FluidSolution>(initial)),
@@ -37,8 +38,8 @@ const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& d
   spare_->exact_on = nullptr;
   std::swap(v_nm1_, spare_);  // (v^n, v^{n−1}, spare) ← (new, v^n, v^{n−1})
   std::swap(v_n_, v_nm1_);
-  t_ += dt_;
   ++steps_;
+  t_ = t0_ + steps_ * dt_;  // not a running sum: t_end arrives to the digit
   return *v_n_;
 }
 

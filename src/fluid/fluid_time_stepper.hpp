@@ -39,7 +39,7 @@ class FluidTimeStepper {
  private:
   PenalisedStokes& fluid_;
   TimeScheme scheme_;
-  double dt_, t_;
+  double dt_, t0_, t_;
   int steps_ = 0;
   std::shared_ptr<FluidTimeDerivative> derivative_;
   // v^n, v^{n−1}, and the buffer the next solution goes to (the last step's v^{n−1},

@@ -108,7 +108,7 @@ void check_name(const std::string& name, const Origin& origin) {
          allowed);
 }
 
-const std::set<std::string> kSections = {"structure", "obstacle", "obstacles", "fluid", "coupling", "contact", "output", "name"};
+const std::set<std::string> kSections = {"structure", "obstacle", "obstacles", "fluid", "coupling", "contact", "output", "time", "name"};
 
 // structure.shape and the files it names agree: one file, the one the shape reads.
 void check_shape_files(const StructureParams& p, const Origin& origin) {
@@ -277,6 +277,36 @@ void read_output(const toml::table& root, const Origin& origin, Case& c, std::ve
   s.reject_unknown();
 }
 
+// [time] (SPEC §12). `known` (the keys' enumeration): read with nothing required.
+void read_time(const toml::table& root, const Origin& origin, Case& c, std::vector<std::string>* known) {
+  const toml::table* table = section_table(root, "time", origin);
+  if (!table && !known) return;
+  Section s(table, "time", origin, known);
+  TimeParams p;
+  p.dt = s.number("dt", p.dt, kSize);
+  p.t_end = s.number("t_end", p.t_end, kSize);
+  p.scheme = s.choice("scheme", p.scheme, {"bdf1", "bdf2"});
+  p.output_every = s.integer("output_every", p.output_every, 1, 1000000000);
+  s.reject_unknown();
+  if (known) return;
+  for (const char* key : {"dt", "t_end"})
+    if (!s.has(key)) fail(origin, std::string("time.") + key, "is required in [time]", "a time in seconds, > 0");
+  if (!(p.dt <= p.t_end))
+    fail(origin, "time.dt", "= " + shortest(p.dt) + " exceeds time.t_end = " + shortest(p.t_end),
+         "(0, time.t_end]");
+  // The far field's Schur complement condenses the load, which changes at every step.
+  if (const toml::table* fluid = section_table(root, "fluid", origin);
+      fluid && fluid->contains("factorization") && c.fluid && c.fluid->factorization == "schur")
+    fail(origin, "fluid.factorization", "= \"schur\" condenses the load, which changes at every time step",
+         "\"whole\" (the default with [time])");
+  if (c.fluid) c.fluid->factorization = "whole";
+  constexpr double kMaxSteps = 1e6;
+  if (p.t_end / p.dt > kMaxSteps)
+    fail(origin, "time.t_end", "/ time.dt = " + shortest(p.t_end / p.dt) + " steps is over the limit",
+         "at most 1e6 steps");
+  c.time = p;
+}
+
 // `known`, if given, collects every key read (case_keys()).
 Case read_case(const toml::table& root, const Origin& origin, const std::string& case_path, bool has_fluid_default,
                std::vector<std::string>* known = nullptr) {
@@ -288,7 +318,7 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     for (auto&& [k, v] : root)
       if (!kSections.count(std::string(k.str())))
         fail(origin, std::string(k.str()), "is not a known key or section",
-             "name, [structure], [obstacle], [[obstacles]], [fluid], [coupling], [contact], [output]");
+             "name, [structure], [obstacle], [[obstacles]], [fluid], [coupling], [contact], [output], [time]");
     check_name(c.name, origin);
   }
   read_structure(root, origin, case_path, c, known);
@@ -309,6 +339,7 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     s.reject_unknown();
   }
   read_output(root, origin, c, known);
+  read_time(root, origin, c, known);
   check_case(c, origin);
   return c;
 }
@@ -470,6 +501,9 @@ std::string to_toml(const Case& c) {
   if (!c.output.probes.empty()) output.insert("probes", points_toml(c.output.probes));
   if (!c.output.fluid_probes.empty()) output.insert("fluid_probes", points_toml(c.output.fluid_probes));
   t.insert("output", output);
+  if (c.time)
+    t.insert("time", toml::table{{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
+                                 {"output_every", c.time->output_every}});
   std::ostringstream out;
   out << t << "\n";
   return out.str();

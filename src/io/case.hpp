@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -162,6 +163,17 @@ struct OutputParams {
   std::vector<Point> fluid_probes;
 };
 
+// [time] (SPEC §12): the case is time-dependent. So far for the fluid alone
+// (structure.shape = "none"); the structure's dynamics, contact in time and the
+// coupled time loop are issue 30's next parts.
+struct TimeParams {
+  double dt = 0;                // time.dt (s), required
+  double t_end = 0;             // time.t_end (s), required; the run takes round(t_end/dt) steps
+  std::string scheme = "bdf1";  // time.scheme: "bdf1" | "bdf2" (the fluid's)
+  int output_every = 1;         // time.output_every: steps between written frames
+  int steps() const { return static_cast<int>(std::llround(t_end / dt)); }
+};
+
 struct Case {
   std::string name = "paper-7.2";
   std::string source = "(built-in paper-7.2 case)";  // where it came from, for messages
@@ -174,6 +186,7 @@ struct Case {
   CouplingParams coupling;
   ContactParams contact;
   OutputParams output;
+  std::optional<TimeParams> time;  // [time]: nullopt for a steady case
 };
 
 // Loads `path` (or the built-in §7.2 case if empty), applies `overrides`

@@ -317,7 +317,26 @@ void check_no_structure(const Case& c, const Origin& o) {
          "no output.probes with structure.shape = \"none\"");
 }
 
+// [time] (SPEC §12), so far for the fluid alone on the penalised method's fixed mesh,
+// whose inertia needs its density.
+void check_time(const Case& c, const Origin& origin) {
+  if (!c.time) return;
+  if (!c.fluid)
+    fail(origin, "time", "needs a fluid: a time-dependent case is so far the fluid alone",
+         "[time] with [fluid] and structure.shape = \"none\"");
+  if (c.structure.shape != "none")
+    fail(origin, "time", "with a structure is not available yet: a time-dependent case is so far the fluid "
+         "alone (the structure's dynamics and contact in time are to come)",
+         "[time] with structure.shape = \"none\"");
+  if (c.fluid->method != "penalised")
+    fail(origin, "fluid.method", "= \"" + c.fluid->method + "\" has no time stepping", "\"penalised\" with [time]");
+  if (c.fluid->rho == 0)
+    fail(origin, "fluid.rho", "is required with [time] (the fluid's inertia ρ ∂v/∂t)",
+         "a density in [1e-30, 1e30] kg/m³");
+}
+
 void check_case(const Case& c, const Origin& origin) {
+  check_time(c, origin);
   if (!c.output.fluid_probes.empty() && !c.fluid)  // points of the flow (SPEC §10)
     fail(origin, "output.fluid_probes", "names points of the fluid, and the case has no [fluid] section",
          "output.fluid_probes with a [fluid] section");

@@ -64,9 +64,9 @@ namespace {
 // end. It is written as Vmax·4s(s − ℓ)/ℓ² (≤ 0) times the outward normal's component,
 // so that Σ4's is, bit for bit, the paper's g = (0, Vmax·4x(x − L1)/L1²) of §3. It
 // vanishes at both ends: the corners shared with walls or other inflows agree. Vmax is
-// fluid.Vmax at the point (SPEC §10: a number, or an expression in x, y, t at t = 0).
-VectorField inflow(int k, const FluidParams& f) {
-  const ScalarField Vmax = inflow_peak(f);
+// fluid.Vmax at the point (SPEC §10: a number, or an expression in x, y, t at time t).
+VectorField inflow(int k, const FluidParams& f, double t) {
+  const ScalarField Vmax = inflow_peak(f, t);
   const double H2 = f.H2;
   const bool vertical = k == 0 || k == 2;           // Σ1, Σ3: along y
   const double l = vertical ? f.H1 + f.H2 : f.L1;   // ℓ
@@ -84,7 +84,7 @@ VectorField inflow(int k, const FluidParams& f) {
 
 }  // namespace
 
-FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f) {
+FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f, double t) {
   FluidBoundaryConditions bc;
   // On the labels, whatever their coordinates (a mesh whose Σk is not on side k is
   // refused by check_fluid_mesh). An outflow side is natural (traction-free), so it
@@ -93,7 +93,7 @@ FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidPar
     if (f.sides[k] == "outflow") continue;
     const int label = mesh.label("Sigma_" + std::to_string(k + 1));
     bc.dirichlet_labels.push_back(label);
-    if (f.sides[k] == "inflow") bc.dirichlet_values.emplace_back(label, inflow(k, f));
+    if (f.sides[k] == "inflow") bc.dirichlet_values.emplace_back(label, inflow(k, f, t));
   }
   for (int label : hole_labels(mesh)) bc.dirichlet_labels.push_back(label);  // Σ5: no-slip on every hole
   return bc;

@@ -13,6 +13,7 @@
 #include "fluid/stokes_residual.hpp"
 #include "io/case.hpp"
 #include "mesh/gmsh_io.hpp"
+#include "run/case_fields.hpp"
 #include "run/outputs/summary.hpp"
 
 namespace fsi {
@@ -42,7 +43,8 @@ Mesh make_fluid_mesh(const Case& c);
 // traction-free) and v = 0 on Σ5 (every hole: hole_labels). The defaults are the
 // paper's §3: v = g on Σ4 with g = (0, Vmax·4x(x − L1)/L1²), v = 0 on Σ1, Σ3, Σ5, Σ2
 // traction-free.
-FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f);
+// `t`: the time fluid.Vmax is evaluated at (an expression in t, SPEC §12).
+FluidBoundaryConditions box_boundary_conditions(const Mesh& mesh, const FluidParams& f, double t = kSteadyTime);
 
 FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
 

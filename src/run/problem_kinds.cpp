@@ -4,7 +4,7 @@ namespace fsi {
 
 std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options) {
   if (!c.fluid) return contact_problem(c, options);
-  if (c.structure.shape == "none") return fluid_problem(c, options);
+  if (c.structure.shape == "none") return c.time ? time_fluid_problem(c, options) : fluid_problem(c, options);
   const bool at_rest = c.coupling.max_iterations == 0;
   if (c.fluid->method == "body-fitted")
     return at_rest ? body_fitted_fluid_at_rest(c, options) : body_fitted_fsi(c, options);

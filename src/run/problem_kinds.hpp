@@ -18,6 +18,8 @@ std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options);
 std::unique_ptr<Problem> contact_problem(const Case& c, const RunOptions& options);
 // structure.shape = "none": the fluid alone, no structure (run/fluid_problem.cpp).
 std::unique_ptr<Problem> fluid_problem(const Case& c, const RunOptions& options);
+// [time] with structure.shape = "none": the fluid alone in time (run/time_fluid_problem.cpp).
+std::unique_ptr<Problem> time_fluid_problem(const Case& c, const RunOptions& options);
 // fluid.method = "penalised" (run/penalised_problem.cpp): coupled (SPEC §5), or with
 // coupling.max_iterations = 0 the fluid alone around the structure at rest (SPEC §3).
 std::unique_ptr<Problem> penalised_fsi(const Case& c, const RunOptions& options);

@@ -52,7 +52,11 @@ std::string other_value(const std::string& key) {
                                                              {"fluid.model", "navier-stokes"},
                                                              {"fluid.rho", "1000"},
                                                              {"fluid.newton_max_steps", "7"},
-                                                             {"fluid.viscous_form", "gradient"}};
+                                                             {"fluid.viscous_form", "gradient"},
+                                                             {"time.dt", "0.5"},
+                                                             {"time.t_end", "3"},
+                                                             {"time.scheme", "bdf2"},
+                                                             {"time.output_every", "2"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
@@ -67,6 +71,8 @@ std::vector<std::string> companions(const std::string& key) {
   if (key == "contact.boundary") return {"contact.gap=normal"};
   if (key == "fluid.bottom") return {"fluid.right=outflow"};  // an outflow side remains
   if (key == "fluid.model") return {"fluid.rho=1"};                 // Navier–Stokes needs its density
+  if (key.rfind("time.", 0) == 0)  // SPEC §12: so far the fluid alone, with its density
+    return {"structure.shape=none", "fluid.rho=1", "time.dt=1", "time.t_end=2"};
   return {};
 }
 

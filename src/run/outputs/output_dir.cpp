@@ -13,9 +13,22 @@ const std::vector<std::string>& output_file_names() {
   static const std::vector<std::string> names = {"summary.json", "case.toml",     "history.csv",  "fluid.vtu",
                                                  "structure.vtu", "fsi.pvd",      "fsi.png",      "fluid.png",
                                                  "structure.png", "table.md",     "table.csv",
-                                                 "convergence.csv", "convergence.md", "convergence.png"};
+                                                 "convergence.csv", "convergence.md", "convergence.png",
+                                                 "fluid.pvd",    "fluid-wake.png"};
   return names;
 }
+
+namespace {
+
+// A time run's frame fluid-NNNNNN.vtu (run/time_fluid_problem.cpp), or its temporary.
+bool is_frame_output(const std::string& file) {
+  if (file.rfind("fluid-", 0) != 0 || file.size() < 16) return false;
+  for (std::size_t i = 6; i < 12; ++i)
+    if (file[i] < '0' || file[i] > '9') return false;
+  return file.compare(12, 4, ".vtu") == 0;
+}
+
+}  // namespace
 
 void remove_stale_outputs(const std::string& dir, const std::string& keep) {
   namespace fs = std::filesystem;
@@ -23,8 +36,10 @@ void remove_stale_outputs(const std::string& dir, const std::string& keep) {
   std::vector<fs::path> stale;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string file = it->path().filename().string();
+    bool is_stale = is_frame_output(file);
     for (const std::string& name : output_file_names())
-      if ((file == name && name != keep) || is_temporary_of(file, name)) stale.push_back(it->path());
+      if ((file == name && name != keep) || is_temporary_of(file, name)) is_stale = true;
+    if (is_stale) stale.push_back(it->path());
   }
   for (const auto& p : stale)
     if (!fs::is_directory(fs::symlink_status(p, ec))) fs::remove(p, ec);

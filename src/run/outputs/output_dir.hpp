@@ -20,7 +20,8 @@ namespace fsi {
 // Every file name a run or a sweep writes into its directory.
 const std::vector<std::string>& output_file_names();
 
-// Removes `dir`'s files named in output_file_names() but `keep`, and their
+// Removes `dir`'s files named in output_file_names() but `keep`, a time run's frames
+// fluid-NNNNNN.vtu, and their
 // temporaries; nothing else (a user's own files stay).
 void remove_stale_outputs(const std::string& dir, const std::string& keep = "");
 

@@ -99,6 +99,9 @@ Json to_json(const Case& c) {
   j["coupling"] = to_json(c.coupling);
   j["contact"] = to_json(c.contact);
   j["output"] = to_json(c.output);
+  if (c.time)
+    j["time"] = {{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
+                 {"output_every", c.time->output_every}};
   return j;
 }
 

@@ -1,0 +1,245 @@
+// [time] with structure.shape = "none" (SPEC §12): the fluid alone marched in time on
+// its fixed mesh from rest, BDF1 or BDF2 (FluidTimeStepper), Stokes or Navier–Stokes,
+// the inflow fluid.Vmax and the body force fluid.f evaluated at each new time. Each
+// step's forces on the obstacles by the residual method with the step's ρ∂v/∂t
+// (MomentumModel::inertia). Outputs: history.csv (one line per step), the frames
+// fluid-NNNNNN.vtu every time.output_every steps and the last, listed with their
+// times in fluid.pvd, the last state's fluid.vtu and fluid.png, and summary.json with
+// the final state, the steps and each obstacle's largest force with its time.
+// The frames' solutions are kept until write() (run() writes files after the solve):
+// a frame costs (3 nv + 2 nt) doubles, 3 MB at 100k triangles.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/interrupt.hpp"
+#include "common/timer.hpp"
+#include "fluid/fluid_time_stepper.hpp"
+#include "run/fluid_setup.hpp"
+#include "run/mesh_checks.hpp"
+#include "run/outputs/fluid_outputs.hpp"
+#include "run/outputs/obstacle_forces.hpp"
+#include "run/outputs/output_dir.hpp"
+#include "run/problem_kinds.hpp"
+#include "run/run_case.hpp"
+
+namespace fsi {
+namespace {
+
+struct StepRow {
+  double t = 0;
+  int newton_steps = 0;
+  double max_speed = 0;
+  std::vector<Point> forces;  // per obstacle
+};
+
+struct Frame {
+  double t = 0;
+  int step = 0;
+  FluidSolution state;
+};
+
+TimeScheme scheme_of(const TimeParams& p) { return p.scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::bdf1; }
+
+double max_speed(const FluidSolution& s) {
+  return std::sqrt((s.v1.array().square() + s.v2.array().square()).maxCoeff());
+}
+
+class TimeFluidProblem final : public Problem {
+ public:
+  TimeFluidProblem(const Case& c, const RunOptions& options) : c_(c), time_(*c.time), progress_(options.progress) {}
+  const char* kind() const override { return "fluid"; }
+
+  // The fluid's own set-up, never the cache's: the time derivative is added to it.
+  void set_up(PhaseTimes& times) override {
+    Mesh mesh = in_phase(times, "mesh", [&] { return make_fluid_mesh(c_); });
+    stats_ = statistics(mesh);
+    f_ = in_phase(times, "fluid", [&] { return make_fluid(c_, std::move(mesh), c_.coupling.eps); });
+  }
+
+  void solve(PhaseTimes& times) override {
+    ScopedPhase phase(times, "fluid");
+    const Mesh& mesh = *f_.mesh;
+    PenalisedStokes& fluid = *f_.stokes;
+    fluid.set_chi(Eigen::VectorXd::Zero(mesh.num_triangles()));  // no structure
+    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, scheme_of(time_), time_.dt, fluid_at_rest(mesh));
+    const auto data = [&](double t) {
+      fluid.set_body_force(fluid_body_force(*c_.fluid, t));
+      fluid.set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, t));
+    };
+    frames_.push_back({0.0, 0, stepper_->state()});
+    const int steps = time_.steps();
+    const Stopwatch clock;
+    for (int k = 1; k <= steps; ++k) {
+      if (interrupt_requested()) {
+        interrupted_ = true;
+        break;
+      }
+      try {
+        stepper_->step(data);
+      } catch (const SolverFailure& e) {
+        failure_ = "step " + std::to_string(k) + " (t = " + shortest(stepper_->time() + time_.dt) + " s): " + e.what();
+        break;
+      }
+      rows_.push_back(row());
+      if (k % time_.output_every == 0 || k == steps) frames_.push_back({stepper_->time(), k, stepper_->state()});
+      report_progress(k, steps, clock);
+    }
+    if ((failure_.size() || interrupted_) && rows_.size() && frames_.back().step != stepper_->steps())
+      frames_.push_back({stepper_->time(), stepper_->steps(), stepper_->state()});  // what was computed
+  }
+
+  void measure(RunResult& r) override {
+    RunMeasures& m = r.measures;
+    m.fluid_mesh = stats_;
+    m.iterations = stepper_ ? stepper_->steps() : 0;
+    m.converged = failure_.empty() && !interrupted_;
+    m.status = !failure_.empty() ? "failed" : interrupted_ ? "interrupted" : "converged";
+    m.failure = failure_;
+    if (!failure_.empty()) r.exit_status = 1, r.failure = failure_;
+    else if (interrupted_) r.exit_status = interrupted_exit_status();
+  }
+
+  void summarise(RunResult& r) override {
+    Json& j = r.summary;
+    j = summary_header(c_, kind());
+    j["mesh"] = {{"fluid", to_json(stats_)}};
+    add_measures(j, r.measures);
+    j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme},
+                 {"steps", stepper_ ? stepper_->steps() : 0}, {"t", stepper_ ? stepper_->time() : 0.0},
+                 {"frames", frames_.size()}};
+    j["obstacles"] = obstacles_json();
+    const FluidSolution* last = rows_.empty() ? nullptr : &stepper_->state();
+    if (!c_.output.fluid_probes.empty()) j["fluid_at"] = fluid_probes_json(c_, *f_.mesh, last);
+    j["fluid"] = fluid_json(*f_.stokes);
+    j["fluid"].update(flow_json(c_));
+    char text[256];
+    std::snprintf(text, sizeof text, "%s: the fluid alone in time (%s, dt = %s s): %d steps to t = %s s on %d triangles.",
+                  c_.name.c_str(), time_.scheme.c_str(), shortest(time_.dt).c_str(), stepper_ ? stepper_->steps() : 0,
+                  shortest(stepper_ ? stepper_->time() : 0.0).c_str(), stats_.triangles);
+    r.report = std::string(text) + (failure_.empty() ? "" : " Failed at " + failure_ + ".") +
+               (interrupted_ ? " Interrupted." : "") + " Results in " + c_.output.dir + "/.";
+  }
+
+  void write(RunOutputs& out) override {
+    out.write("history.csv", [&](const std::string& p) { write_history(p); });
+    if (c_.output.vtu && !frames_.empty()) {
+      for (const Frame& frame : frames_)
+        out.write(frame_name(frame), [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frame.state, chi()); });
+      out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p); });
+      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frames_.back().state, chi()); });
+    }
+    if (c_.output.png && !rows_.empty())
+      out.write("fluid.png", [&](const std::string& p) {
+        write_fluid_png(p, c_, *f_.mesh, stepper_->state(), Mesh{}, {},
+                        c_.name + ": fluid velocity magnitude at t = " + shortest(stepper_->time()) + " s",
+                        "hF = " + shortest(c_.fluid->h) + ";  " + time_.scheme + ", dt = " + shortest(time_.dt));
+      });
+    write_case_toml(out, c_);
+  }
+
+ private:
+  Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(f_.mesh->num_triangles()); }
+  static std::string frame_name(const Frame& f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fluid-%06d.vtu", f.step);
+    return name;
+  }
+
+  // A line at most every 2 s (and at the last step): the simulated time, the pace
+  // and the time left at that pace.
+  void report_progress(int k, int steps, const Stopwatch& clock) {
+    if (!progress_) return;
+    const double elapsed = clock.elapsed();
+    if (k < steps && elapsed - last_progress_ < 2.0) return;
+    last_progress_ = elapsed;
+    const double rate = k / std::max(elapsed, 1e-9);
+    char text[160];
+    std::snprintf(text, sizeof text, "[time] step %d/%d, t = %.6g s, %.3g steps/s, about %.0f s left", k, steps,
+                  stepper_->time(), rate, (steps - k) / rate);
+    progress_(text);
+  }
+
+  // This step's row: the forces with the step's ρ∂v/∂t and f_F at its time.
+  StepRow row() const {
+    StepRow r{stepper_->time(), 0, max_speed(stepper_->state()), {}};
+    if (const FluidNewtonReport* n = f_.stokes->newton()) r.newton_steps = n->steps + n->picard_steps;
+    MomentumModel model = momentum_model(*c_.fluid);
+    model.inertia = stepper_->last_step_inertia();
+    const VectorField f = fluid_body_force(*c_.fluid, r.t);
+    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
+    for (std::size_t i = 0; i < count; ++i) {
+      const int label = f_.mesh->label(c_.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
+      r.forces.push_back(hole_force(*f_.mesh, model, f, stepper_->state(), label, {}));
+    }
+    return r;
+  }
+
+  // obstacles[i]: the last step's force, and the largest |F_x| and |F_y| over the run
+  // with their times (the DFG 2D-3 benchmark's C_D,max and C_L,max).
+  Json obstacles_json() const {
+    Json list = Json::array();
+    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (rows_.empty()) {
+        list.push_back({{"force", nullptr}});
+        continue;
+      }
+      std::size_t kx = 0, ky = 0;
+      for (std::size_t k = 0; k < rows_.size(); ++k) {
+        if (std::abs(rows_[k].forces[i].x()) > std::abs(rows_[kx].forces[i].x())) kx = k;
+        if (std::abs(rows_[k].forces[i].y()) > std::abs(rows_[ky].forces[i].y())) ky = k;
+      }
+      list.push_back({{"force", point_json(rows_.back().forces[i])},
+                      {"force_max", {rows_[kx].forces[i].x(), rows_[ky].forces[i].y()}},
+                      {"force_max_time", {rows_[kx].t, rows_[ky].t}}});
+    }
+    return list;
+  }
+
+  void write_history(const std::string& path) const {
+    std::ofstream out(path);
+    out << "step,t,newton_steps,max_speed";
+    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
+    for (std::size_t i = 1; i <= count; ++i) out << ",obstacle_" << i << "_force_x,obstacle_" << i << "_force_y";
+    out << "\n";
+    for (std::size_t k = 0; k < rows_.size(); ++k) {  // every number to its last digit
+      out << k + 1 << "," << shortest(rows_[k].t) << "," << rows_[k].newton_steps << "," << shortest(rows_[k].max_speed);
+      for (const Point& F : rows_[k].forces) out << "," << shortest(F.x()) << "," << shortest(F.y());
+      out << "\n";
+    }
+    if (!out.flush()) throw OutputError(path + ": could not be written");
+  }
+
+  // ParaView's collection: each frame's file with its time.
+  void write_pvd(const std::string& path) const {
+    std::ofstream out(path);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    for (const Frame& frame : frames_)
+      out << "    <DataSet timestep=\"" << shortest(frame.t) << "\" file=\"" << frame_name(frame) << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+    if (!out.flush()) throw OutputError(path + ": could not be written");
+  }
+
+  const Case& c_;
+  TimeParams time_;
+  MeshStatistics stats_;
+  FluidSetup f_;
+  std::unique_ptr<FluidTimeStepper> stepper_;
+  std::vector<StepRow> rows_;
+  std::vector<Frame> frames_;
+  std::string failure_;
+  bool interrupted_ = false;
+  std::function<void(const std::string&)> progress_;
+  double last_progress_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Problem> time_fluid_problem(const Case& c, const RunOptions& options) {
+  return std::make_unique<TimeFluidProblem>(c, options);
+}
+
+}  // namespace fsi
