@@ -5,9 +5,10 @@
 // (MomentumModel::inertia). Outputs: history.csv (one line per step), the frames
 // fluid-NNNNNN.vtu every time.output_every steps and the last, listed with their
 // times in fluid.pvd, the last state's fluid.vtu and fluid.png, and summary.json with
-// the final state, the steps and each obstacle's largest force with its time.
+// the final state, the steps and each obstacle's extreme forces with their times.
 // The frames' solutions are kept until write() (run() writes files after the solve):
 // a frame costs (3 nv + 2 nt) doubles, 3 MB at 100k triangles.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -177,8 +178,8 @@ class TimeFluidProblem final : public Problem {
     return r;
   }
 
-  // obstacles[i]: the last step's force, and the largest |F_x| and |F_y| over the run
-  // with their times (the DFG 2D-3 benchmark's C_D,max and C_L,max).
+  // obstacles[i]: the last step's force, and each component's largest and smallest
+  // value over the run with their times (the DFG 2D-3 benchmark's C_D,max, C_L,max).
   Json obstacles_json() const {
     Json list = Json::array();
     const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
@@ -187,14 +188,21 @@ class TimeFluidProblem final : public Problem {
         list.push_back({{"force", nullptr}});
         continue;
       }
-      std::size_t kx = 0, ky = 0;
-      for (std::size_t k = 0; k < rows_.size(); ++k) {
-        if (std::abs(rows_[k].forces[i].x()) > std::abs(rows_[kx].forces[i].x())) kx = k;
-        if (std::abs(rows_[k].forces[i].y()) > std::abs(rows_[ky].forces[i].y())) ky = k;
-      }
+      std::array<std::size_t, 2> hi{0, 0}, lo{0, 0};
+      for (std::size_t k = 0; k < rows_.size(); ++k)
+        for (int c = 0; c < 2; ++c) {
+          if (rows_[k].forces[i][c] > rows_[hi[c]].forces[i][c]) hi[c] = k;
+          if (rows_[k].forces[i][c] < rows_[lo[c]].forces[i][c]) lo[c] = k;
+        }
+      const auto value = [&](const std::array<std::size_t, 2>& at) {
+        return Json::array({rows_[at[0]].forces[i][0], rows_[at[1]].forces[i][1]});
+      };
+      const auto time = [&](const std::array<std::size_t, 2>& at) { return Json::array({rows_[at[0]].t, rows_[at[1]].t}); };
       list.push_back({{"force", point_json(rows_.back().forces[i])},
-                      {"force_max", {rows_[kx].forces[i].x(), rows_[ky].forces[i].y()}},
-                      {"force_max_time", {rows_[kx].t, rows_[ky].t}}});
+                      {"force_max", value(hi)},
+                      {"force_max_time", time(hi)},
+                      {"force_min", value(lo)},
+                      {"force_min_time", time(lo)}});
     }
     return list;
   }
