@@ -300,10 +300,10 @@ void read_time(const toml::table& root, const Origin& origin, Case& c, std::vect
     fail(origin, "fluid.factorization", "= \"schur\" condenses the load, which changes at every time step",
          "\"whole\" (the default with [time])");
   if (c.fluid) c.fluid->factorization = "whole";
-  constexpr double kMaxSteps = 1e6;
-  if (p.t_end / p.dt > kMaxSteps)
+  const double max_steps = case_limits().time_steps;
+  if (p.t_end / p.dt > max_steps)
     fail(origin, "time.t_end", "/ time.dt = " + shortest(p.t_end / p.dt) + " steps is over the limit",
-         "at most 1e6 steps");
+         "at most " + shortest(max_steps) + " steps");
   c.time = p;
 }
 

@@ -229,6 +229,7 @@ struct CaseLimits {
   double structure_triangles = 2.0e5;  // the active-set solver's dense m × m contact Schur complement
   double fluid_triangles = 4.0e6;      // memory of the factorisation
   int max_iterations = 100000;
+  double time_steps = 1.0e6;  // time.t_end / time.dt
 };
 // The limits in force: the defaults above; the command-line fuzzer lowers them so
 // that each of its inputs runs in milliseconds (fuzz/fuzz_cli.cpp).

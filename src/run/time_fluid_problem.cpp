@@ -81,7 +81,9 @@ class TimeFluidProblem final : public Problem {
       try {
         stepper_->step(data);
       } catch (const SolverFailure& e) {
-        failure_ = "step " + std::to_string(k) + " (t = " + shortest(stepper_->time() + time_.dt) + " s): " + e.what();
+        // Newton's own words speak of a steady flow; in a step, a shorter one is the remedy.
+        failure_ = "step " + std::to_string(k) + " (t = " + shortest(stepper_->time() + time_.dt) + " s): " + e.what() +
+                   (f_.stokes->newton() ? "; in a time step, a smaller time.dt helps Newton's method" : "");
         break;
       }
       rows_.push_back(row());

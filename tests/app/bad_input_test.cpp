@@ -206,7 +206,7 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"time_dt_zero", kValid + "[fluid]\n", "--set structure.shape=none --set fluid.rho=1 --set time.dt=0 --set time.t_end=1", {"time.dt", "[1e-30, 1e+30]"}},
       {"time_without_t_end", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\n", "--set structure.shape=none", {"case.toml: time.t_end", "required"}},
       {"time_dt_beyond_t_end", kValid + "[fluid]\nrho = 1\n[time]\ndt = 2\nt_end = 1\n", "--set structure.shape=none", {"time.dt = 2", "(0, time.t_end]"}},
-      {"time_too_many_steps", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-9\nt_end = 1\n", "--set structure.shape=none", {"time.t_end", "1e6 steps"}},
+      {"time_too_many_steps", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-9\nt_end = 1\n", "--set structure.shape=none", {"time.t_end", "steps is over the limit", "at most"}},
       {"time_scheme_unknown", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\nscheme = \"bdf3\"\n", "--set structure.shape=none", {"time.scheme", "\"bdf1\", \"bdf2\""}},
       {"time_with_a_structure", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\n", "", {"case.toml: time", "not available yet", "structure.shape = \"none\""}},
       {"time_without_rho", kValid + "[fluid]\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.shape=none", {"fluid.rho", "required with [time]"}},
