@@ -19,7 +19,6 @@ FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeSchem
       scheme_(scheme),
       dt_(dt),
       t0_(t0),
-      t_(t0),
       derivative_(std::make_shared<FluidTimeDerivative>(rho, fluid.mesh())),
       v_n_(std::make_unique<FluidSolution>(initial)),
       v_nm1_(std::make_unique<FluidSolution>(initial)),
@@ -30,7 +29,7 @@ FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeSchem
 }
 
 const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& data) {
-  if (data) data(t_ + dt_);
+  if (data) data(time() + dt_);
   const BdfWeights w = bdf_weights(scheme_, steps_);
   derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
   fluid_.terms_changed();
@@ -39,7 +38,6 @@ const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& d
   std::swap(v_nm1_, spare_);  // (v^n, v^{n−1}, spare) ← (new, v^n, v^{n−1})
   std::swap(v_n_, v_nm1_);
   ++steps_;
-  t_ = t0_ + steps_ * dt_;  // not a running sum: t_end arrives to the digit
   return *v_n_;
 }
 

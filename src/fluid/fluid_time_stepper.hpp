@@ -13,7 +13,8 @@
 
 namespace fsi {
 
-// A state at rest with `fluid`'s prescribed values (v = 0 elsewhere, p = 0).
+// The fluid at rest on `mesh`: v = 0 (bubbles too) and p = 0 everywhere, the
+// prescribed values included (an impulsive start: the first step applies them).
 FluidSolution fluid_at_rest(const Mesh& mesh);
 
 class FluidTimeStepper {
@@ -28,7 +29,7 @@ class FluidTimeStepper {
   // on time (may be empty). Throws SolverFailure (the state stays at t).
   const FluidSolution& step(const std::function<void(double)>& data = {});
 
-  double time() const { return t_; }
+  double time() const { return t0_ + steps_ * dt_; }  // not a running sum: t_end arrives to the digit
   int steps() const { return steps_; }
   double dt() const { return dt_; }
   const FluidSolution& state() const { return *v_n_; }
@@ -39,7 +40,7 @@ class FluidTimeStepper {
  private:
   PenalisedStokes& fluid_;
   TimeScheme scheme_;
-  double dt_, t0_, t_;
+  double dt_, t0_;
   int steps_ = 0;
   std::shared_ptr<FluidTimeDerivative> derivative_;
   // v^n, v^{n−1}, and the buffer the next solution goes to (the last step's v^{n−1},

@@ -21,7 +21,6 @@ void FluidTimeDerivative::add(int, const P1Triangle& T, MiniLocal& e) const {
   add_mass(T, rho_ * weights_.alpha / dt_, e);
 }
 
-
 // (ρ/Δt) ∫ (β₁ v^n + β₂ v^{n−1})·φ: the local mass (add_mass with coefficient 1) applied
 // to the history's coefficients.
 void FluidTimeDerivative::add_load(int t, const P1Triangle& T, ElementLoad& load) const {

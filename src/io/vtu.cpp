@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/format.hpp"
 #include "io/atomic_file.hpp"
 
 namespace fsi {
@@ -178,7 +179,7 @@ void write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {
   write_atomically(path, [&](std::ostream& out) {
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
     for (const auto& e : entries)
-      out << "  <DataSet timestep=\"0\" part=\"" << e.part << "\" file=\"" << e.file << "\"/>\n";
+      out << "  <DataSet timestep=\"" << shortest(e.time) << "\" part=\"" << e.part << "\" file=\"" << e.file << "\"/>\n";
     out << "</Collection>\n</VTKFile>\n";
   });
 }

@@ -42,6 +42,7 @@ void write_quadratic_vtu(const std::string& path, const std::vector<Point>& node
 struct PvdEntry {
   std::string file;  // relative to the .pvd
   int part = 0;
+  double time = 0;   // its timestep (a time series' frame; 0 for one state)
 };
 void write_pvd(const std::string& path, const std::vector<PvdEntry>& entries);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -256,19 +257,30 @@ void check_file_structure(const Case& c, const Mesh& mesh, const std::string& wh
 
 // output.probes (SPEC §11) are material points: each in Ω_S0, up to 1e-9 of its
 // diameter (a point on the boundary written with a rounded last digit passes).
+namespace {
+
+// The first of `points` farther than `tol` from `mesh` (its index and that distance).
+std::optional<std::pair<std::size_t, double>> first_point_outside(const Mesh& mesh, const std::vector<Point>& points,
+                                                                  double tol) {
+  const PointLocator locator(mesh);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& x = points[i];
+    const double distance = locator.locate(x) ? 0.0 : (locator.nearest_boundary_point(x) - x).norm();
+    if (distance > tol) return std::make_pair(i, distance);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 void check_probes_inside(const Case& c, const Mesh& mesh, const std::string& what) {
   if (c.output.probes.empty()) return;
   const Box b = bounding_box(mesh);
   const double tol = 1e-9 * (b.hi - b.lo).norm();
-  const PointLocator locator(mesh);
-  for (std::size_t i = 0; i < c.output.probes.size(); ++i) {
-    const Point& X = c.output.probes[i];
-    const double distance = locator.locate(X) ? 0.0 : (locator.nearest_boundary_point(X) - X).norm();
-    if (distance > tol)
-      throw InputError(c.source + ": output.probes[" + std::to_string(i + 1) + "] = " + at(X) + " is " +
-                       approx(distance) + " m outside the structure (" + what +
-                       "); allowed: points of the reference configuration, within " + approx(tol) + " m of it");
-  }
+  if (const auto out = first_point_outside(mesh, c.output.probes, tol))
+    throw InputError(c.source + ": output.probes[" + std::to_string(out->first + 1) + "] = " +
+                     at(c.output.probes[out->first]) + " is " + approx(out->second) + " m outside the structure (" +
+                     what + "); allowed: points of the reference configuration, within " + approx(tol) + " m of it");
 }
 
 // output.fluid_probes (SPEC §10) lie in D: inside the mesh, or within a tenth of hF of
@@ -277,15 +289,11 @@ void check_probes_inside(const Case& c, const Mesh& mesh, const std::string& wha
 void check_fluid_probes_inside(const Case& c, const Mesh& mesh) {
   if (c.output.fluid_probes.empty()) return;
   const double tol = 0.1 * c.fluid->h;
-  const PointLocator locator(mesh);
-  for (std::size_t i = 0; i < c.output.fluid_probes.size(); ++i) {
-    const Point& x = c.output.fluid_probes[i];
-    const double distance = locator.locate(x) ? 0.0 : (locator.nearest_boundary_point(x) - x).norm();
-    if (distance > tol)
-      throw InputError(c.source + ": output.fluid_probes[" + std::to_string(i + 1) + "] = " + at(x) + " is " +
-                       approx(distance) + " m outside the fluid domain (a hole or beyond the box); allowed: points of "
-                       "the fluid's mesh, within fluid.h / 10 = " + approx(tol) + " m of it");
-  }
+  if (const auto out = first_point_outside(mesh, c.output.fluid_probes, tol))
+    throw InputError(c.source + ": output.fluid_probes[" + std::to_string(out->first + 1) + "] = " +
+                     at(c.output.fluid_probes[out->first]) + " is " + approx(out->second) +
+                     " m outside the fluid domain (a hole or beyond the box); allowed: points of the fluid's mesh, "
+                     "within fluid.h / 10 = " + approx(tol) + " m of it");
 }
 
 void check_structure_mesh(const Case& c, const Mesh& mesh) {

@@ -11,13 +11,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
 #include "fluid/fluid_time_stepper.hpp"
+#include "io/atomic_file.hpp"
+#include "io/vtu.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/outputs/fluid_outputs.hpp"
@@ -131,7 +132,7 @@ class TimeFluidProblem final : public Problem {
     if (c_.output.vtu && !frames_.empty()) {
       for (const Frame& frame : frames_)
         out.write(frame_name(frame), [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frame.state, chi()); });
-      out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p); });
+      out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p, pvd_entries()); });
       out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frames_.back().state, chi()); });
     }
     if (c_.output.png && !rows_.empty())
@@ -172,11 +173,8 @@ class TimeFluidProblem final : public Problem {
     MomentumModel model = momentum_model(*c_.fluid);
     model.inertia = stepper_->last_step_inertia();
     const VectorField f = fluid_body_force(*c_.fluid, r.t);
-    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
-    for (std::size_t i = 0; i < count; ++i) {
-      const int label = f_.mesh->label(c_.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
-      r.forces.push_back(hole_force(*f_.mesh, model, f, stepper_->state(), label, {}));
-    }
+    for (const std::string& hole : obstacle_hole_names(c_))
+      r.forces.push_back(hole_force(*f_.mesh, model, f, stepper_->state(), f_.mesh->label(hole), {}));
     return r;
   }
 
@@ -184,7 +182,7 @@ class TimeFluidProblem final : public Problem {
   // value over the run with their times (the DFG 2D-3 benchmark's C_D,max, C_L,max).
   Json obstacles_json() const {
     Json list = Json::array();
-    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
+    const std::size_t count = obstacle_hole_names(c_).size();
     for (std::size_t i = 0; i < count; ++i) {
       if (rows_.empty()) {
         list.push_back({{"force", nullptr}});
@@ -210,27 +208,24 @@ class TimeFluidProblem final : public Problem {
   }
 
   void write_history(const std::string& path) const {
-    std::ofstream out(path);
-    out << "step,t,newton_steps,max_speed";
-    const std::size_t count = c_.obstacles_given ? c_.obstacles.size() : 1;
-    for (std::size_t i = 1; i <= count; ++i) out << ",obstacle_" << i << "_force_x,obstacle_" << i << "_force_y";
-    out << "\n";
-    for (std::size_t k = 0; k < rows_.size(); ++k) {  // every number to its last digit
-      out << k + 1 << "," << shortest(rows_[k].t) << "," << rows_[k].newton_steps << "," << shortest(rows_[k].max_speed);
-      for (const Point& F : rows_[k].forces) out << "," << shortest(F.x()) << "," << shortest(F.y());
+    write_atomically(path, [&](std::ostream& out) {
+      out << "step,t,newton_steps,max_speed";
+      for (std::size_t i = 1; i <= obstacle_hole_names(c_).size(); ++i)
+        out << ",obstacle_" << i << "_force_x,obstacle_" << i << "_force_y";
       out << "\n";
-    }
-    if (!out.flush()) throw OutputError(path + ": could not be written");
+      for (std::size_t k = 0; k < rows_.size(); ++k) {  // every number to its last digit
+        out << k + 1 << "," << shortest(rows_[k].t) << "," << rows_[k].newton_steps << "," << shortest(rows_[k].max_speed);
+        for (const Point& F : rows_[k].forces) out << "," << shortest(F.x()) << "," << shortest(F.y());
+        out << "\n";
+      }
+    });
   }
 
   // ParaView's collection: each frame's file with its time.
-  void write_pvd(const std::string& path) const {
-    std::ofstream out(path);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-    for (const Frame& frame : frames_)
-      out << "    <DataSet timestep=\"" << shortest(frame.t) << "\" file=\"" << frame_name(frame) << "\"/>\n";
-    out << "  </Collection>\n</VTKFile>\n";
-    if (!out.flush()) throw OutputError(path + ": could not be written");
+  std::vector<PvdEntry> pvd_entries() const {
+    std::vector<PvdEntry> entries;
+    for (const Frame& frame : frames_) entries.push_back({frame_name(frame), 0, frame.t});
+    return entries;
   }
 
   const Case& c_;

@@ -60,8 +60,8 @@ TEST(TimeRun, Dfg2d3sFirstStepsWriteHistoryFramesAndSummary) {
   EXPECT_DOUBLE_EQ(s["obstacles"][0]["force_max_time"][0].get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(s["obstacles"][0]["force_min_time"][0].get<double>(), 0.1);  // the first step's drag
   const std::string pvd = testing::slurp(dir / "res/fluid.pvd");
-  for (const char* frame : {"timestep=\"0\" file=\"fluid-000000.vtu\"", "timestep=\"0.2\" file=\"fluid-000002.vtu\"",
-                            "timestep=\"0.4\" file=\"fluid-000004.vtu\"", "timestep=\"0.5\" file=\"fluid-000005.vtu\""}) {
+  for (const char* frame : {"timestep=\"0\" part=\"0\" file=\"fluid-000000.vtu\"", "timestep=\"0.2\" part=\"0\" file=\"fluid-000002.vtu\"",
+                            "timestep=\"0.4\" part=\"0\" file=\"fluid-000004.vtu\"", "timestep=\"0.5\" part=\"0\" file=\"fluid-000005.vtu\""}) {
     EXPECT_NE(pvd.find(frame), std::string::npos) << frame << "\n" << pvd;
   }
   for (const char* file : {"fluid-000000.vtu", "fluid-000002.vtu", "fluid-000004.vtu", "fluid-000005.vtu", "fluid.vtu"})

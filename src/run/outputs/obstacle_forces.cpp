@@ -46,17 +46,22 @@ Json fluid_probes_json(const Case& c, const Mesh& mesh, const FluidSolution* s) 
   return list;
 }
 
+std::vector<std::string> obstacle_hole_names(const Case& c) {
+  if (!c.obstacles_given) return {"Sigma_5"};
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < c.obstacles.size(); ++i) names.push_back("Sigma_5_" + std::to_string(i + 1));
+  return names;
+}
+
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa) {
   Json list = Json::array();
-  // [[obstacles]]' holes Sigma_5_i, or [obstacle]'s one disk Sigma_5.
-  const std::size_t count = c.obstacles_given ? c.obstacles.size() : 1;
-  for (std::size_t i = 0; i < count; ++i) {
+  for (const std::string& hole : obstacle_hole_names(c)) {
     if (!s) {
       list.push_back({{"force", nullptr}});
       continue;
     }
-    const int label = mesh.label(c.obstacles_given ? "Sigma_5_" + std::to_string(i + 1) : std::string("Sigma_5"));
-    const Point force = hole_force(mesh, momentum_model(*c.fluid), fluid_body_force(*c.fluid), *s, label, kappa);
+    const Point force =
+        hole_force(mesh, momentum_model(*c.fluid), fluid_body_force(*c.fluid), *s, mesh.label(hole), kappa);
     list.push_back({{"force", point_json(force)}});
   }
   return list;

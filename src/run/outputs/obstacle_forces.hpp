@@ -15,6 +15,10 @@
 
 namespace fsi {
 
+// The obstacles' holes in the case's order, by their labels' names: Sigma_5_i of
+// [[obstacles]], or Sigma_5 for [obstacle]'s one disk.
+std::vector<std::string> obstacle_hole_names(const Case& c);
+
 // [{"force": [Fx, Fy]}, ...] in the case's order ([obstacle]'s disk: one), from the last fluid solution (made
 // exact everywhere first); a force that cannot be computed (no solution, or its
 // completion failed) is null.
