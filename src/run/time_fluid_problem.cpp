@@ -111,6 +111,7 @@ class TimeFluidProblem final : public Problem {
     j = summary_header(c_, kind());
     j["mesh"] = {{"fluid", to_json(stats_)}};
     add_measures(j, r.measures);
+    j["steps"] = stepper_ ? stepper_->steps() : 0;  // SPEC §12's key; time.steps the same
     j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme},
                  {"steps", stepper_ ? stepper_->steps() : 0}, {"t", stepper_ ? stepper_->time() : 0.0},
                  {"frames", frames_.size()}};

@@ -38,6 +38,7 @@ TEST(TimeRun, Dfg2d3sFirstStepsWriteHistoryFramesAndSummary) {
   const auto s = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
   EXPECT_EQ(s["status"], "converged");
   EXPECT_EQ(s["time"]["steps"], 5);
+  EXPECT_EQ(s["steps"], 5);  // SPEC §12's key
   EXPECT_DOUBLE_EQ(s["time"]["t"].get<double>(), 0.5);
   EXPECT_EQ(s["time"]["scheme"], "bdf2");
   EXPECT_EQ(s["parameters"]["time"]["dt"], 0.1);
