@@ -141,7 +141,7 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.L = s.number("L", p.L, kSize);
   p.H = s.number("H", p.H, kSize);
   p.E = s.number("E", p.E, kSize);
-  p.nu = s.number("nu", p.nu, left_open(0, kMaxPoisson));
+  p.nu = s.number("nu", p.nu, {0, kMaxPoisson, true, true});  // ν = 0: the bar impact (SPEC §12)
   p.f = s.vector2_or_expressions("f", p.f, p.f_expression, {0, 0, p.L, p.H});  // SPEC §10
   p.h_N = s.vector2("h_N", p.h_N);
   p.h = s.number("h", p.h, kSize);
@@ -152,6 +152,10 @@ void read_structure(const toml::table& root, const Origin& origin, const std::st
   p.model = s.choice("model", p.model, {"linear", "saint-venant-kirchhoff", "neo-hookean"});
   p.element = s.choice("element", p.element, {"P1", "P2"});
   p.mesher = s.choice("mesher", p.mesher, {"lattice", "gmsh"});
+  p.rho = s.number("rho", p.rho, {1e-30, 1e30, true, true});  // SPEC §12
+  p.v0 = s.vector2("v0", p.v0);
+  p.clamped = s.boolean("clamped", p.clamped);
+  p.mass = s.choice("mass", p.mass, {"redistributed", "consistent"});
   check_shape_files(p, origin);
   s.reject_unknown();
 }
@@ -470,6 +474,8 @@ std::string to_toml(const Case& c) {
   if (s.model != "linear") st.insert("model", s.model);  // the default stays unwritten (Table 1's case.toml)
   if (s.element != "P1") st.insert("element", s.element);
   if (s.mesher != "lattice") st.insert("mesher", s.mesher);
+  if (s.rho > 0) st.insert("rho", s.rho), st.insert("v0", vec(s.v0)), st.insert("mass", s.mass);
+  if (!s.clamped) st.insert("clamped", false);
   t.insert("structure", st);
   const auto& o = c.obstacle;
   if (!c.obstacles_given) {

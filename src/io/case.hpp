@@ -42,6 +42,15 @@ struct StructureParams {
   // Who makes the rectangle's mesh: "lattice" (the project's generator) | "gmsh"
   // (Frontal-Delaunay: the meshes of fsicontact before issue 15).
   std::string mesher = "lattice";
+  // SPEC §12 (with [time]): the density ρ_S (kg/m³; 0: not given), the uniform initial
+  // velocity v0 (m/s; zero on Γ_D), whether Γ_D holds the structure (false: a free
+  // body, its Γ_D edges free like Γ_N's; [time] only), and its mass matrix:
+  // "consistent", or "redistributed" (no mass on the contact candidates, Khenous,
+  // Laborde & Renard 2008; P1 only; solid/structure_mass.hpp).
+  double rho = 0;
+  Point v0{0.0, 0.0};
+  bool clamped = true;
+  std::string mass = "redistributed";
   bool rectangle() const { return shape == "rectangle"; }
   // The given file (mesh or script), for messages; empty for the rectangle.
   const std::string& file() const { return shape == "geo" ? geo : mesh; }

@@ -319,15 +319,28 @@ void check_no_structure(const Case& c, const Origin& o) {
 
 // [time] (SPEC §12), so far for the fluid alone on the penalised method's fixed mesh,
 // whose inertia needs its density.
+// A structure in time (SPEC §12): its density, and what its mass matrix allows.
+void check_structure_in_time(const Case& c, const Origin& origin) {
+  const auto& s = c.structure;
+  if (c.fluid)
+    fail(origin, "time", "with a structure and a fluid is not available yet: a time-dependent case is so far "
+         "the fluid alone or the structure alone (the coupled time loop is to come)",
+         "[time] with structure.shape = \"none\", or without [fluid]");
+  if (s.rho == 0)
+    fail(origin, "structure.rho", "is required with [time] and a structure (its inertia ρ_S ü)",
+         "a density in [1e-30, 1e30] kg/m³");
+  if (s.mass == "redistributed" && s.element != "P1")
+    fail(origin, "structure.mass", "= \"redistributed\" lumps P1's mass; structure.element = \"" + s.element +
+         "\" has none to lump", "\"consistent\" with structure.element = \"P2\"");
+}
+
 void check_time(const Case& c, const Origin& origin) {
+  if (!c.structure.clamped && !c.time)
+    fail(origin, "structure.clamped", "= false leaves a free body, which only inertia holds",
+         "true, or false with a [time] section");
   if (!c.time) return;
-  if (!c.fluid)
-    fail(origin, "time", "needs a fluid: a time-dependent case is so far the fluid alone",
-         "[time] with [fluid] and structure.shape = \"none\"");
-  if (c.structure.shape != "none")
-    fail(origin, "time", "with a structure is not available yet: a time-dependent case is so far the fluid "
-         "alone (the structure's dynamics and contact in time are to come)",
-         "[time] with structure.shape = \"none\"");
+  if (c.structure.shape != "none") return check_structure_in_time(c, origin);
+  if (!c.fluid) return;  // nothing at all: check_no_structure says so
   if (c.fluid->method != "penalised")
     fail(origin, "fluid.method", "= \"" + c.fluid->method + "\" has no time stepping", "\"penalised\" with [time]");
   if (c.fluid->rho == 0)

@@ -34,6 +34,7 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
     throw QpError("active-set: operator and constraint sizes do not match");
   require_finite(A, "active-set", "the operator A_S");
   require_finite(C, "active-set", "the constraint matrix C_S");
+  S_.resize(0, 0);  // S = C A⁻¹ Cᵀ belongs to the old A: set_constraints recomputes it
   // The same pattern as before (a Newton step's tangent, SPEC §11): the symbolic
   // analysis is kept and only the numeric factorisation redone.
   const bool same_pattern = factorised() && A.nonZeros() == A_.nonZeros() && A.rows() == A_.rows() &&
@@ -64,10 +65,26 @@ void ActiveSetSolver::set_operator(const SparseMatrix& A, const SparseMatrix& C)
   set_constraints(C);
 }
 
+namespace {
+// Same size, pattern and values (both compressed, as Eigen's products leave them).
+bool same_matrix(const SparseMatrix& a, const SparseMatrix& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  if (!a.isCompressed() || !b.isCompressed()) return false;
+  const auto n = static_cast<std::size_t>(a.nonZeros());
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + n, b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + n, b.valuePtr());
+}
+}  // namespace
+
 void ActiveSetSolver::set_constraints(const SparseMatrix& C) {
   if (!factorised()) throw QpError("active-set: set_constraints before set_operator");
   if (C.cols() != A_.rows()) throw QpError("active-set: constraint and operator sizes do not match");
   require_finite(C, "active-set", "the constraint matrix C_S");
+  // The same C again (a half-plane's rows, re-linearised about each time step's state,
+  // do not change): S is kept. Measured on the bar impact (2 600 dofs, 440 rows): the
+  // 440 solves of S took 44 ms of a 45 ms step; the comparison takes 10 µs.
+  if (S_.rows() == C.rows() && same_matrix(C_, C)) return;
   C_ = C;
   const Eigen::Index m = C_.rows();
   if (simplicial_ && simplicial_->touches_only_constrained(C_)) {

@@ -305,7 +305,7 @@ void check_structure_mesh(const Case& c, const Mesh& mesh) {
     check_file_structure(c, mesh, what);
   }
   if (c.contact.gap == "paper") check_contact_zone(c, mesh, what);  // ψ's span; "normal" needs none
-  check_clamped(c, mesh, what);
+  if (c.structure.clamped) check_clamped(c, mesh, what);  // a free body (SPEC §12) has no Γ_D
   check_outside_disk(c, mesh, what);
   if (c.fluid) check_inside_box(c, mesh, what);
   check_clamp_off_inflow(c, mesh, what);

@@ -3,7 +3,7 @@
 namespace fsi {
 
 std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options) {
-  if (!c.fluid) return contact_problem(c, options);
+  if (!c.fluid) return c.time ? time_structure_problem(c, options) : contact_problem(c, options);
   if (c.structure.shape == "none") return c.time ? time_fluid_problem(c, options) : fluid_problem(c, options);
   const bool at_rest = c.coupling.max_iterations == 0;
   if (c.fluid->method == "body-fitted")

@@ -16,6 +16,8 @@ std::unique_ptr<Problem> make_problem(const Case& c, const RunOptions& options);
 
 // SPEC §2: no [fluid] (run/contact_problem.cpp).
 std::unique_ptr<Problem> contact_problem(const Case& c, const RunOptions& options);
+// [time] without [fluid]: the structure alone in time (run/time_structure_problem.cpp).
+std::unique_ptr<Problem> time_structure_problem(const Case& c, const RunOptions& options);
 // structure.shape = "none": the fluid alone, no structure (run/fluid_problem.cpp).
 std::unique_ptr<Problem> fluid_problem(const Case& c, const RunOptions& options);
 // [time] with structure.shape = "none": the fluid alone in time (run/time_fluid_problem.cpp).

@@ -1,5 +1,6 @@
 #include "run/setup_cache.hpp"
 
+#include "common/format.hpp"
 #include "run/fluid_band.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/outputs/summary.hpp"
@@ -38,7 +39,8 @@ std::string fluid_mesh_key(const Case& c) {
 // make_structure reads structure.*, obstacle.* and contact.*; make_fluid fluid.*
 // and the mesh (ε is set per row).
 std::string structure_setup_key(const Case& c) {
-  return structure_mesh_key(c) + json_text(to_json(c.contact));
+  // Δt too: Newmark's operator A_S + (4/Δt²) M is the solver's (SPEC §12).
+  return structure_mesh_key(c) + json_text(to_json(c.contact)) + (c.time ? "dt=" + shortest(c.time->dt) : "");
 }
 
 std::string fluid_setup_key(const Case& c) { return json_text(to_json(*c.fluid)) + fluid_mesh_key(c); }

@@ -8,7 +8,9 @@
 #include "run/case_contact.hpp"
 #include "run/case_fields.hpp"
 #include "run/mesh_checks.hpp"
+#include "solid/newmark.hpp"
 #include "solid/p2_elasticity.hpp"
+#include "solid/structure_mass.hpp"
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"
 
@@ -46,8 +48,22 @@ Mesh build_structure_mesh(const Case& c) {
   return read_case_mesh(c, "structure.mesh", s.mesh, {"Gamma_D", "Gamma_N"}, "Omega_S", limit, {"Gamma_C"});
 }
 
+namespace {
+
+// structure.clamped = false (SPEC §12, a free body): Γ_D's edges become Γ_N's, free
+// and loaded by h_N; the label stays, with no edge, so that no dof is held.
+void free_gamma_d(Mesh& mesh) {
+  if (!mesh.has_label("Gamma_D")) return;
+  const int d = mesh.label("Gamma_D"), n = mesh.add_label("Gamma_N");
+  for (BoundaryEdge& e : mesh.boundary_edges)
+    if (e.label == d) e.label = n;
+}
+
+}  // namespace
+
 Mesh make_structure_mesh(const Case& c) {
   Mesh mesh = build_structure_mesh(c);
+  if (!c.structure.clamped) free_gamma_d(mesh);
   check_structure_mesh(c, mesh);
   return mesh;
 }
@@ -57,9 +73,9 @@ namespace {
 // ∫ f_S·w + ∫_{Γ_N} h_S·w for constant f_S, h_N: exact with one point (P1) and with the
 // P2 space's degree-2 triangle and 2-point edge rules. An f_S that varies (an
 // expression, SPEC §10) takes the degree-4 rule: exact for its quadratic part on P2.
-Eigen::VectorXd applied_load(const Case& c, const Mesh& mesh, const P2Space* p2) {
+Eigen::VectorXd applied_load(const Case& c, const Mesh& mesh, const P2Space* p2, double t = kSteadyTime) {
   const Point h_N = c.structure.h_N;
-  const VectorField f_S = structure_body_force(c.structure);
+  const VectorField f_S = structure_body_force(c.structure, t);
   const auto h_S = [h_N](const Point&) { return h_N; };
   const int gamma_n = mesh.label("Gamma_N");
   const bool varies = body_force_varies(c.structure);
@@ -67,7 +83,22 @@ Eigen::VectorXd applied_load(const Case& c, const Mesh& mesh, const P2Space* p2)
   return assemble_volume_load(mesh, f_S, varies ? 4 : 1) + assemble_surface_load(mesh, gamma_n, h_S, 1);
 }
 
+// The mass matrix of structure.mass: redistributed off the contact rows' vertices.
+SparseMatrix structure_mass(const Case& c, const Mesh& mesh, const P2Space* p2, const ContactConstraint& contact) {
+  if (c.structure.mass == "consistent") return consistent_mass(mesh, p2, c.structure.rho);
+  std::vector<int> rows = contact.row_vertex;
+  return redistributed_mass(mesh, rows, c.structure.rho);
+}
+
 }  // namespace
+
+Eigen::VectorXd structure_load(const Case& c, const Mesh& mesh, const P2Space* p2, double t) {
+  return applied_load(c, mesh, p2, t);
+}
+
+bool structure_load_varies(const Case& c) {
+  return !c.structure.f_expression[0].empty() || !c.structure.f_expression[1].empty();
+}
 
 const ContactSolution& StructureSetup::load_alone() {
   if (!load_alone_) {
@@ -93,13 +124,16 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
   const int gamma_c = mesh.label("Gamma_C");
   const std::vector<int> fixed = clamped_dofs(mesh, mesh.label("Gamma_D"));
   s.gap = std::make_shared<ContactGap>(case_contact_gap(c, mesh));
+  // "normal": its first constraint linearised at rest (no ψ: the obstacles need not be the paper's disk).
+  ContactConstraint first = s.gap->normal() ? s.gap->at_rest(mesh) : assemble_contact(mesh, gamma_c, *s.foundation);
+  std::optional<Inertia> inertia;
+  if (c.time) {  // Newmark's operator A_S + (4/Δt²) M (SPEC §12)
+    s.mass = structure_mass(c, p2 ? p2->mesh : mesh, p2 ? &p2->space : nullptr, first);
+    inertia = Inertia{s.mass, Newmark::operator_factor(c.time->dt)};
+  }
   try {
-    if (s.gap->normal()) {  // its first constraint: linearised at rest (no ψ: the obstacles need not be the paper's disk)
-      ContactConstraint at_rest = s.gap->at_rest(mesh);  // before `mesh` is moved from
-      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, std::move(at_rest), gamma_c, fixed,
-                                                        *s.qp, p2);
-    } else
-      s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, *s.foundation, gamma_c, fixed, *s.qp, p2);
+    s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, std::move(first), gamma_c, fixed, *s.qp,
+                                                      p2, inertia ? &*inertia : nullptr);
   } catch (const QpError& e) {
     throw SolverFailure(std::string("structure: ") + e.what());
   }

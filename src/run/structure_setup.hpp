@@ -24,6 +24,9 @@ struct StructureSetup {
   std::unique_ptr<QpSolver> qp;
   std::unique_ptr<ElasticContactSolver> solver;
   Eigen::VectorXd b_applied;  // ∫ f_S·w + ∫_{Γ_N} h_S·w (eq. 16)
+  // With [time] (SPEC §12): the mass matrix ρ_S M of structure.mass on all dofs, which
+  // the solver's operator holds as (4/Δt²) M (Newmark's step); empty otherwise.
+  SparseMatrix mass;
   // The mesh the dofs live on: the structure's (P1) or its P2 space's nodal mesh.
   const Mesh& mesh() const { return solver->mesh(); }
   const P2Space* p2() const { return solver->p2(); }  // null with structure.element = "P1"
@@ -49,6 +52,11 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
                               const std::function<void(const std::string&)>& progress);
 
 std::unique_ptr<QpSolver> make_qp_solver(const std::string& name);
+
+// b_S's applied part at time t (structure.f may be an expression in t): ∫ f_S·w + ∫_{Γ_N} h_S·w.
+Eigen::VectorXd structure_load(const Case& c, const Mesh& mesh, const P2Space* p2, double t);
+// Whether structure.f depends on anything (x, y or t): the load is then reassembled per step.
+bool structure_load_varies(const Case& c);
 
 // summary.json's contact.gap, min_gap (null without obstacles) and, with "normal",
 // obstacles[i].{active_nodes, x_min, x_max, force} (SPEC §9).

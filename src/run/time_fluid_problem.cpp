@@ -26,6 +26,7 @@
 #include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
+#include "run/time_progress.hpp"
 
 namespace fsi {
 namespace {
@@ -73,7 +74,6 @@ class TimeFluidProblem final : public Problem {
     };
     frames_.push_back({0.0, 0, stepper_->state()});
     const int steps = time_.steps();
-    const Stopwatch clock;
     for (int k = 1; k <= steps; ++k) {
       if (interrupt_requested()) {
         interrupted_ = true;
@@ -89,7 +89,7 @@ class TimeFluidProblem final : public Problem {
       }
       rows_.push_back(row());
       if (k % time_.output_every == 0 || k == steps) frames_.push_back({stepper_->time(), k, stepper_->state()});
-      report_progress(k, steps, clock);
+      progress_.report(k, steps, stepper_->time());
     }
     if ((failure_.size() || interrupted_) && rows_.size() && frames_.back().step != stepper_->steps())
       frames_.push_back({stepper_->time(), stepper_->steps(), stepper_->state()});  // what was computed
@@ -151,20 +151,6 @@ class TimeFluidProblem final : public Problem {
     char name[32];
     std::snprintf(name, sizeof name, "fluid-%06d.vtu", f.step);
     return name;
-  }
-
-  // A line at most every 2 s (and at the last step): the simulated time, the pace
-  // and the time left at that pace.
-  void report_progress(int k, int steps, const Stopwatch& clock) {
-    if (!progress_) return;
-    const double elapsed = clock.elapsed();
-    if (k < steps && elapsed - last_progress_ < 2.0) return;
-    last_progress_ = elapsed;
-    const double rate = k / std::max(elapsed, 1e-9);
-    char text[160];
-    std::snprintf(text, sizeof text, "[time] step %d/%d, t = %.6g s, %.3g steps/s, about %.0f s left", k, steps,
-                  stepper_->time(), rate, (steps - k) / rate);
-    progress_(text);
   }
 
   // This step's row: the forces with the step's ρ∂v/∂t and f_F at its time.
@@ -238,8 +224,7 @@ class TimeFluidProblem final : public Problem {
   std::vector<Frame> frames_;
   std::string failure_;
   bool interrupted_ = false;
-  std::function<void(const std::string&)> progress_;
-  double last_progress_ = 0;
+  TimeProgress progress_;
 };
 
 }  // namespace

@@ -51,13 +51,13 @@ std::vector<int> clamped_dofs(const Mesh& mesh, int label) {
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame,
                                            const Foundation& foundation, int gamma_c_label,
                                            const std::vector<int>& fixed_dofs, QpSolver& solver,
-                                           std::shared_ptr<const OwnedP2Space> p2)
+                                           std::shared_ptr<const OwnedP2Space> p2, const Inertia* inertia)
     : ElasticContactSolver(Mesh(mesh), lame, assemble_contact(mesh, gamma_c_label, foundation), gamma_c_label,
-                           fixed_dofs, solver, std::move(p2)) {}
+                           fixed_dofs, solver, std::move(p2), inertia) {}
 
 ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
                                            const std::vector<int>& fixed_dofs, QpSolver& solver,
-                                           std::shared_ptr<const OwnedP2Space> p2)
+                                           std::shared_ptr<const OwnedP2Space> p2, const Inertia* inertia)
     : mesh_(std::move(mesh)),
       p2_(std::move(p2)),
       gamma_c_label_(gamma_c_label),
@@ -70,11 +70,17 @@ ElasticContactSolver::ElasticContactSolver(Mesh mesh, const Lame& lame, ContactC
   const int n = 2 * mesh_.num_vertices();
   std::vector<bool> fixed(n, false);
   for (int d : fixed_dofs) fixed.at(d) = true;
-  require_no_rigid_motion(mesh_, fixed_dofs);
+  if (!inertia) require_no_rigid_motion(mesh_, fixed_dofs);
   for (int d = 0; d < n; ++d)
     if (!fixed[d]) free_dofs_.push_back(d);
   P_ = selection(n, free_dofs_);
   A_free_ = P_.transpose() * A_S_ * P_;
+  if (inertia) {
+    if (inertia->M.rows() != n || inertia->M.cols() != n || !(inertia->c > 0))
+      throw std::invalid_argument("ElasticContactSolver: the inertia's mass matrix does not fit the mesh");
+    M_free_ = inertia->c * (P_.transpose() * inertia->M * P_);
+    A_free_ += M_free_;
+  }
   C_free_ = contact_.C_S * P_;
   solver_.set_operator(A_free_, C_free_);
 }

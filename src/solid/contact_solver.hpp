@@ -34,6 +34,13 @@ struct ContactSolution {
   NewtonReport newton;
 };
 
+// Newmark's step (SPEC §12) adds c·M to the operator: the QP's matrix is A_S + (4/Δt²) M
+// (or the tangent + c M), which is positive definite with a free body too (no Γ_D).
+struct Inertia {
+  SparseMatrix M;  // the mass matrix on all dofs (solid/structure_mass.hpp)
+  double c = 0;    // its factor, 4/Δt² for the average acceleration
+};
+
 class ElasticContactSolver {
  public:
   // `fixed_dofs`: dofs held at zero (Γ_D); they must prevent every rigid motion
@@ -43,12 +50,14 @@ class ElasticContactSolver {
   // fixed dofs and every output live as on a P1 mesh (docs/theory.md, "P2").
   ElasticContactSolver(Mesh mesh, const Lame& lame, const Foundation& foundation,
                        int gamma_c_label, const std::vector<int>& fixed_dofs, QpSolver& solver,
-                       std::shared_ptr<const OwnedP2Space> p2 = nullptr);
+                       std::shared_ptr<const OwnedP2Space> p2 = nullptr, const Inertia* inertia = nullptr);
 
   // The same with a given constraint (contact.gap = "normal": the signed distance's).
   ElasticContactSolver(Mesh mesh, const Lame& lame, ContactConstraint contact, int gamma_c_label,
                        const std::vector<int>& fixed_dofs, QpSolver& solver,
-                       std::shared_ptr<const OwnedP2Space> p2 = nullptr);
+                       std::shared_ptr<const OwnedP2Space> p2 = nullptr, const Inertia* inertia = nullptr);
+  // `inertia` (a time step, SPEC §12): the operator is A_S + c M (f_int(u) + c M u for
+  // a nonlinear material), and `fixed_dofs` may then be empty (a free body).
 
   // A nonlinear material (structure.model, SPEC §11): solve() is then Newton's method
   // with the contact constraint in every step, each step one QP with the tangent, to a
@@ -81,6 +90,9 @@ class ElasticContactSolver {
   Eigen::VectorXd project(const Eigen::VectorXd& z);
 
   const SparseMatrix& A_S() const { return A_S_; }
+  // The free dofs (increasing): the rest are held at zero.
+  const std::vector<int>& free_dofs() const { return free_dofs_; }
+  bool has_inertia() const { return M_free_.size() > 0; }
   const ContactConstraint& contact() const { return contact_; }
   // The mesh the dofs live on: the structure's mesh (P1), or the P2 space's nodal mesh.
   const Mesh& mesh() const { return mesh_; }
@@ -92,6 +104,7 @@ class ElasticContactSolver {
  private:
   ContactSolution solve_nonlinear(const Eigen::VectorXd& b_S, const ContactSolution* warm);
   void require_unfolded(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd force(const Eigen::VectorXd& u) const;  // f_int(u) (+ c M u) on the free dofs
   bool newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report);
   // A Newton step taken: the displacement, its internal force and equilibrium
   // residual, and how many times it was halved.
@@ -119,6 +132,7 @@ class ElasticContactSolver {
   std::vector<int> free_dofs_;
   SparseMatrix P_;  // free dofs → all dofs
   SparseMatrix A_free_, C_free_;
+  SparseMatrix M_free_;  // c M on the free dofs (empty without inertia)
   QpSolver& solver_;
 };
 

@@ -104,7 +104,7 @@ ElasticContactSolver::DampedStep ElasticContactSolver::damped_step(const Eigen::
   for (double s = 1;; s *= 0.5, ++step.cuts) {
     step.u(free_dofs_) = x_k + s * (qp.x - x_k);
     try {
-      step.f = assembler_->force(material_, step.u);
+      step.f = force(step.u);
       step.residual = equilibrium_residual(step.f, b, qp.alpha, step.u(free_dofs_), K_norm);
     } catch (const SolverFailure&) {  // a folded triangle: shorter
       step.residual = INFINITY;
@@ -114,13 +114,19 @@ ElasticContactSolver::DampedStep ElasticContactSolver::damped_step(const Eigen::
   return step;
 }
 
+Eigen::VectorXd ElasticContactSolver::force(const Eigen::VectorXd& u) const {
+  Eigen::VectorXd f = assembler_->force(material_, u);
+  if (has_inertia()) f += M_free_ * u(free_dofs_);
+  return f;
+}
+
 // Newton from `state` for the load b_S; true (state: the solution) if converged.
 bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& state, NewtonReport& report) {
   report.history.clear();
   const Eigen::VectorXd b = b_S(free_dofs_);
   Eigen::VectorXd u = state.u, f;
   try {
-    f = assembler_->force(material_, u);
+    f = force(u);
   } catch (const SolverFailure& e) {  // a start (a warm state) with a folded triangle
     last_newton_failure_ = e.what();
     return false;
@@ -129,6 +135,7 @@ bool ElasticContactSolver::newton(const Eigen::VectorXd& b_S, ContactSolution& s
   double r_prev = INFINITY;  // the start's multipliers belong to another load: never compared
   for (int step = 0; step < newton_max_steps; ++step) {
     assembler_->tangent(material_, u, K_);
+    if (has_inertia()) K_ += M_free_;  // A_free_'s pattern holds M's: the sum keeps it
     const double K_norm = infinity_norm(K_);
     const Eigen::VectorXd x_k = u(free_dofs_);
     QpResult qp;
@@ -171,7 +178,10 @@ ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S
   const ContactSolution start = warm && warm->u.size() == b_S.size() ? *warm : at_rest();
   NewtonReport report;
   last_newton_failure_.clear();
-  for (int n = 1; n <= kMaxLoadSteps; n *= 2) {
+  // With inertia the load holds the last step's state (M's terms): scaled it is no
+  // load path; a time step short enough is the remedy instead.
+  const int max_load_steps = has_inertia() ? 1 : kMaxLoadSteps;
+  for (int n = 1; n <= max_load_steps; n *= 2) {
     ContactSolution state = start;
     bool converged = true;
     for (int k = 1; k <= n && converged; ++k) converged = newton(b_S * (static_cast<double>(k) / n), state, report);
@@ -185,7 +195,7 @@ ContactSolution ElasticContactSolver::solve_nonlinear(const Eigen::VectorXd& b_S
   char numbers[160];
   std::snprintf(numbers, sizeof numbers, "did not reach the relative residual %.3g in %d steps, with the load "
                 "applied whole or in up to %d increments (last residual %.3g)", newton_tol, newton_max_steps,
-                kMaxLoadSteps, report.residual);
+                max_load_steps, report.residual);
   throw SolverFailure("Newton's method for the structure (structure.model = \"" +
                       std::string(material_name(material_.model)) + "\") " + numbers + "; the last attempt's residuals: " + history_text(report.history) +
                       (last_newton_failure_.empty() ? "" : "; the QP: " + last_newton_failure_));

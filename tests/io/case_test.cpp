@@ -193,7 +193,7 @@ TEST(Case, ErrorsNameTheKeyAndTheAllowedRange) {
     const std::string m = e.what();
     EXPECT_NE(m.find("--set structure.nu"), std::string::npos) << m;
     EXPECT_NE(m.find("0.7"), std::string::npos) << m;
-    EXPECT_NE(m.find("allowed: (0, 0.499999995]"), std::string::npos) << m;
+    EXPECT_NE(m.find("allowed: [0, 0.499999995]"), std::string::npos) << m;
   }
 }
 

@@ -56,7 +56,10 @@ std::string other_value(const std::string& key) {
                                                              {"time.dt", "0.5"},
                                                              {"time.t_end", "3"},
                                                              {"time.scheme", "bdf2"},
-                                                             {"time.output_every", "2"}};
+                                                             {"time.output_every", "2"},
+                                                             {"structure.rho", "1000"},
+                                                             {"structure.v0", "[0.1, 0]"},
+                                                             {"structure.mass", "consistent"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
@@ -88,16 +91,25 @@ TEST(SetupKeys, EveryCaseKeyIsInTheParameters) {
   for (const std::string& key : keys) {
     if (key == "name" || key == "output.dir") continue;  // a name renames; a dir moves
     if (key == "structure.shape") continue;  // follows structure.mesh and .geo: it cannot change alone
+    if (key == "structure.clamped") continue;  // false needs [time] without [fluid]: the next test
     const Case base = load_case("", companions(key)), c = changed(key);
     EXPECT_NE(to_json(c).dump(), to_json(base).dump()) << key << " is missing from summary.json's parameters";
   }
+}
+
+// structure.clamped = false is valid only in a time run of the structure alone (SPEC §12).
+TEST(SetupKeys, StructureClampedIsInTheParametersAndTheSetupKey) {
+  const std::string bar = std::string(FSICONTACT_SOURCE_DIR) + "/cases/bar-impact.toml";
+  const Case free_body = load_case(bar), clamped = load_case(bar, {"structure.clamped=true"});
+  EXPECT_NE(to_json(free_body).dump(), to_json(clamped).dump());
+  EXPECT_NE(structure_setup_key(free_body), structure_setup_key(clamped));
 }
 
 TEST(SetupKeys, EverySectionKeyAChangesItsSetupKey) {
   for (const std::string& key : case_keys()) {
     const std::string section = key.substr(0, key.find('.'));
     if (section == "coupling" || section == "output" || section == "name") continue;  // set per row, or no setup
-    if (key == "structure.shape") continue;  // follows structure.mesh and .geo
+    if (key == "structure.shape" || key == "structure.clamped") continue;  // follows .mesh and .geo; the test above
     const Case base = load_case("", companions(key)), c = changed(key);
     if (section == "fluid" || section == "obstacle") {
       EXPECT_NE(fluid_setup_key(c), fluid_setup_key(base)) << key;

@@ -23,7 +23,8 @@ Json to_json(const StructureParams& s) {
   return {{"shape", s.shape},  {"L", s.L},      {"H", s.H},          {"E", s.E},
           {"nu", s.nu},        {"f", load_json(s.f, s.f_expression)}, {"h_N", vec(s.h_N)}, {"h", s.h},
           {"mesh", s.mesh},    {"geo", s.geo},  {"model", s.model},  {"element", s.element},
-          {"mesher", s.mesher}};
+          {"mesher", s.mesher}, {"rho", s.rho},    {"v0", vec(s.v0)},   {"clamped", s.clamped},
+          {"mass", s.mass}};
 }
 
 Json to_json(const ObstacleParams& o) {

@@ -1,0 +1,205 @@
+// [time] without [fluid] (SPEC §12): the structure alone in time, Newmark's average
+// acceleration (solid/newmark.hpp) with contact at each new time, one contact problem
+// per step (ContactGap::solve: one QP, re-linearised QPs for contact.gap = "normal", or
+// Newton's QPs for a nonlinear material) warm-started from the last step's active set
+// and displacement. From rest at u = 0 with the uniform velocity structure.v0 (a free
+// body with structure.clamped = false). Outputs: history.csv (one line per step, and
+// the initial state), the frames structure-NNNNNN.vtu every time.output_every steps and
+// the last, listed with their times in structure.pvd, the last state's structure.vtu
+// and structure.png, and summary.json with the final state, the steps, the energy's
+// balance and the contact intervals.
+#include <cmath>
+#include <cstdio>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/interrupt.hpp"
+#include "fem/probes.hpp"
+#include "io/vtu.hpp"
+#include "run/outputs/output_dir.hpp"
+#include "run/outputs/structure_history.hpp"
+#include "run/outputs/structure_outputs.hpp"
+#include "run/problem_kinds.hpp"
+#include "run/run_case.hpp"
+#include "run/structure_setup.hpp"
+#include "run/time_progress.hpp"
+#include "solid/newmark.hpp"
+
+namespace fsi {
+namespace {
+
+struct StructureFrame {
+  double t = 0;
+  int step = 0;
+  ContactSolution state;
+};
+
+class TimeStructureProblem final : public Problem {
+ public:
+  TimeStructureProblem(const Case& c, const RunOptions& options)
+      : c_(c), time_(*c.time), options_(options), progress_(options.progress) {}
+  const char* kind() const override { return "contact"; }
+
+  void set_up(PhaseTimes& times) override {
+    Mesh mesh = in_phase(times, "mesh", [&] { return make_structure_mesh(c_); });
+    stats_ = statistics(mesh);
+    ScopedPhase phase(times, "structure");
+    // The QP's own lines would come at every step: the time's progress line speaks instead.
+    s_ = make_structure(c_, std::move(mesh), nullptr);
+    probes_ = std::make_unique<ProbeSet>(s_.mesh(), c_.output.probes, s_.p2());
+  }
+
+  void solve(PhaseTimes& times) override {
+    ScopedPhase phase(times, "structure");
+    newmark_ = std::make_unique<Newmark>(s_.mass, time_.dt, s_.solver->free_dofs());
+    const int n = s_.mesh().num_vertices() * 1;
+    Eigen::VectorXd v0(2 * n);
+    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
+    b_last_ = s_.b_applied;
+    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
+    initial_ = row(0);
+    frames_.push_back({0.0, 0, state_.contact});
+    const int steps = time_.steps();
+    for (int k = 1; k <= steps && !interrupted_; ++k) {
+      if ((interrupted_ = interrupt_requested())) break;
+      try {
+        step();
+      } catch (const SolverFailure& e) {
+        failure_ = "step " + std::to_string(k) + " (t = " + shortest(state_.t + time_.dt) + " s): " + e.what();
+        break;
+      }
+      rows_.push_back(row(last_iterations_));
+      if (k % time_.output_every == 0 || k == steps) frames_.push_back({state_.t, k, state_.contact});
+      progress_.report(k, steps, state_.t);
+    }
+    if ((failure_.size() || interrupted_) && frames_.back().step != state_.step)
+      frames_.push_back({state_.t, state_.step, state_.contact});  // what was computed
+  }
+
+  void measure(RunResult& r) override {
+    RunMeasures& m = r.measures;
+    m.structure_mesh = stats_;
+    m.iterations = state_.step;
+    m.converged = failure_.empty() && !interrupted_;
+    m.status = !failure_.empty() ? "failed" : interrupted_ ? "interrupted" : "converged";
+    m.failure = failure_;
+    m.displacement = RunMeasures::Displacement{max_displacement(state_.u), component(state_.u, 1).minCoeff()};
+    m.contact = summarize_contact(*s_.solver, state_.contact);
+    r.displacement = state_.u;
+    if (!failure_.empty()) r.exit_status = 1, r.failure = failure_;
+    else if (interrupted_) r.exit_status = interrupted_exit_status();
+  }
+
+  void summarise(RunResult& r) override {
+    Json& j = r.summary;
+    j = summary_header(c_, kind());
+    j["mesh"] = {{"structure", to_json(stats_)}};
+    add_measures(j, r.measures);
+    j["steps"] = state_.step;
+    j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", "newmark"}, {"mass", c_.structure.mass},
+                 {"steps", state_.step}, {"t", state_.t}, {"frames", frames_.size()}};
+    j["solver"] = s_.qp->name();
+    add_displacement_at(j, c_, s_.mesh(), state_.u, s_.p2());
+    j["contact"] = to_json(*r.measures.contact);
+    add_gap_summary(j["contact"], c_, s_, state_.contact);
+    j["velocity"] = point_json(rows_.empty() ? initial_.velocity : rows_.back().velocity);
+    j["energy"] = energy_json(initial_, rows_);
+    j["contact_intervals"] = contact_intervals_json(initial_, rows_, time_.dt);
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s: the structure alone in time (Newmark, %s mass, dt = %s s): %d steps to t = %s s on %d "
+                  "triangles, %zu contact interval(s), energy drift %.2g of its largest value.",
+                  c_.name.c_str(), c_.structure.mass.c_str(), shortest(time_.dt).c_str(), state_.step,
+                  shortest(state_.t).c_str(), stats_.triangles, j["contact_intervals"].size(),
+                  j["energy"]["max_relative_drift"].get<double>());
+    r.report = std::string(text) + (failure_.empty() ? "" : " Failed at " + failure_ + ".") +
+               (interrupted_ ? " Interrupted." : "") + " Results in " + c_.output.dir + "/.";
+  }
+
+  void write(RunOutputs& out) override {
+    out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
+    if (c_.output.vtu) {
+      for (const StructureFrame& f : frames_)
+        out.write(frame_name(f), [&](const std::string& p) { write_structure_vtu(p, c_, s_, f.state, false); });
+      out.write("structure.pvd", [&](const std::string& p) {
+        std::vector<PvdEntry> entries;
+        for (const StructureFrame& f : frames_) entries.push_back({frame_name(f), 0, f.t});
+        write_pvd(p, entries);
+      });
+      out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
+    }
+    if (c_.output.png)
+      out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c_, s_, state_.contact); });
+    write_case_toml(out, c_);
+  }
+
+ private:
+  static std::string frame_name(const StructureFrame& f) {
+    char name[40];
+    std::snprintf(name, sizeof name, "structure-%06d.vtu", f.step);
+    return name;
+  }
+
+  // One Newmark step: the contact problem for b_eff from the last state.
+  void step() {
+    const double t = (state_.step + 1) * time_.dt;
+    const Eigen::VectorXd b = structure_load_varies(c_) ? structure_load(c_, s_.mesh(), s_.p2(), t) : s_.b_applied;
+    const int before = s_.gap->linearisations();
+    ContactSolution next;
+    try {
+      next = s_.gap->solve(*s_.solver, newmark_->effective_load(state_, b), state_.u, &state_.contact);
+    } catch (const QpError& e) {
+      throw SolverFailure(std::string("the step's contact QP failed: ") + e.what());
+    }
+    if (!next.u.allFinite() || !next.qp.alpha.allFinite())
+      throw SolverFailure("the step's contact problem returned a non-finite displacement or multiplier");
+    last_iterations_ = next.qp.iterations + next.newton.steps + (s_.gap->linearisations() - before);
+    // The applied load's work over the step, trapezoidal: exact for a load linear in t.
+    work_ += 0.5 * (b_last_ + b).dot(next.u - state_.u);
+    b_last_ = b;
+    state_ = newmark_->advance(state_, std::move(next));
+  }
+
+  StructureRow row(int iterations) const {
+    StructureRow r;
+    r.step = state_.step;
+    r.t = state_.t;
+    r.qp_iterations = iterations;
+    r.active_nodes = state_.contact.qp.active_count();
+    r.max_u = max_displacement(state_.u);
+    r.kinetic = newmark_->kinetic_energy(state_.v);
+    r.elastic = elastic_energy(*s_.solver, state_.u);
+    r.work = work_;
+    r.velocity = newmark_->momentum(state_.v) / newmark_->mass();
+    if (state_.contact.qp.alpha.size())
+      r.contact_force = resultant(s_.solver->contact().C_S.transpose() * state_.contact.qp.alpha);
+    if (!probes_->empty()) r.probes = probes_->displacements(state_.u);
+    return r;
+  }
+
+  const Case& c_;
+  TimeParams time_;
+  const RunOptions& options_;
+  TimeProgress progress_;
+  MeshStatistics stats_;
+  StructureSetup s_;
+  std::unique_ptr<ProbeSet> probes_;
+  std::unique_ptr<Newmark> newmark_;
+  NewmarkState state_;
+  Eigen::VectorXd b_last_;
+  double work_ = 0;
+  int last_iterations_ = 0;
+  StructureRow initial_;
+  std::vector<StructureRow> rows_;
+  std::vector<StructureFrame> frames_;
+  std::string failure_;
+  bool interrupted_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Problem> time_structure_problem(const Case& c, const RunOptions& options) {
+  return std::make_unique<TimeStructureProblem>(c, options);
+}
+
+}  // namespace fsi
