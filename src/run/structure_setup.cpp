@@ -135,7 +135,10 @@ StructureSetup make_structure(const Case& c, Mesh mesh,
     s.solver = std::make_unique<ElasticContactSolver>(std::move(mesh), s.lame, std::move(first), gamma_c, fixed, *s.qp,
                                                       p2, inertia ? &*inertia : nullptr);
   } catch (const QpError& e) {
-    throw SolverFailure(std::string("structure: ") + e.what());
+    // A free body rests on its mass alone: (4/Δt²)M lost against A_S in double precision.
+    const std::string free_body = c.structure.clamped ? "" : "; a free body (structure.clamped = false) rests on "
+        "its mass term (4/Δt²) ρ_S h², here lost against E in double precision: a larger structure.rho or a smaller time.dt";
+    throw SolverFailure(std::string("structure: ") + e.what() + free_body);
   }
   if (c.structure.model != "linear") s.solver->set_material({material_model(c.structure.model), s.lame});
   s.b_applied = applied_load(c, s.mesh(), s.p2());
