@@ -29,16 +29,33 @@ FluidTimeStepper::FluidTimeStepper(PenalisedStokes& fluid, double rho, TimeSchem
 }
 
 const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& data) {
+  begin(data);
+  solve();
+  accept();
+  return *v_n_;
+}
+
+void FluidTimeStepper::begin(const std::function<void(double)>& data) {
   if (data) data(time() + dt_);
   const BdfWeights w = bdf_weights(scheme_, steps_);
   derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
   fluid_.terms_changed();
+  solved_ = false;
+}
+
+const FluidSolution& FluidTimeStepper::solve() {
   *spare_ = fluid_.solve();
   spare_->exact_on = nullptr;
+  solved_ = true;
+  return *spare_;
+}
+
+void FluidTimeStepper::accept() {
+  if (!solved_) throw std::logic_error("FluidTimeStepper::accept before a solve of the step");
   std::swap(v_nm1_, spare_);  // (v^n, v^{n−1}, spare) ← (new, v^n, v^{n−1})
   std::swap(v_n_, v_nm1_);
   ++steps_;
-  return *v_n_;
+  solved_ = false;
 }
 
 }  // namespace fsi

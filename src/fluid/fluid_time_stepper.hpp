@@ -29,6 +29,17 @@ class FluidTimeStepper {
   // on time (may be empty). Throws SolverFailure (the state stays at t).
   const FluidSolution& step(const std::function<void(double)>& data = {});
 
+  // The same step in parts, for a coupled step whose passes change χ and the
+  // penalty's load (SPEC §12): begin() sets the data at t^{n+1} and the history;
+  // solve() solves with what the fluid holds now, once per pass; accept() makes the
+  // last pass's solution v^{n+1}. step() is begin, solve, accept.
+  void begin(const std::function<void(double)>& data = {});
+  const FluidSolution& solve();
+  void accept();
+  // v^{n−1} (v^n before the first step) and the BDF weights of the step begun (or next).
+  const FluidSolution& previous() const { return *v_nm1_; }
+  BdfWeights weights() const { return bdf_weights(scheme_, steps_); }
+
   double time() const { return t0_ + steps_ * dt_; }  // not a running sum: t_end arrives to the digit
   int steps() const { return steps_; }
   double dt() const { return dt_; }
@@ -42,6 +53,7 @@ class FluidTimeStepper {
   TimeScheme scheme_;
   double dt_, t0_;
   int steps_ = 0;
+  bool solved_ = false;  // the step begun has a solution in spare_
   std::shared_ptr<FluidTimeDerivative> derivative_;
   // v^n, v^{n−1}, and the buffer the next solution goes to (the last step's v^{n−1},
   // which its time derivative still reads until the next step).

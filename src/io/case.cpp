@@ -256,6 +256,7 @@ void read_coupling(const toml::table& root, const Origin& origin, Case& c, std::
   p.tol = s.number("tol", p.tol, kSize);
   p.max_iterations = s.integer("max_iterations", p.max_iterations, 0, case_limits().max_iterations);
   p.scheme = s.choice("scheme", p.scheme, {"constant", "aitken", "iqn-ils"});
+  p.reuse = s.integer("reuse", p.reuse, 0, 100);  // SPEC §12: IQN-ILS's pairs of past time steps
   p.eps_rule = s.text("eps_rule", p.eps_rule);
   if (!eps_rule_power(p.eps_rule))
     fail(origin, "coupling.eps_rule", "= \"" + p.eps_rule + "\" is not a known rule",
@@ -500,6 +501,7 @@ std::string to_toml(const Case& c) {
                       {"scheme", k.scheme}, {"eps_rule", k.eps_rule}};
   if (k.force != "small") coupling.insert("force", k.force);  // the default stays unwritten
   if (k.force_sampling != 1) coupling.insert("force_sampling", k.force_sampling);
+  if (k.reuse != CouplingParams{}.reuse) coupling.insert("reuse", k.reuse);
   t.insert("coupling", coupling);
   t.insert("contact", toml::table{{"solver", c.contact.solver}, {"gap", c.contact.gap}, {"boundary", c.contact.boundary}});
   toml::table output{{"dir", c.output.dir}, {"png", c.output.png}, {"vtu", c.output.vtu}};

@@ -131,6 +131,8 @@ struct CouplingParams {
   double tol = 1.0e-4;
   int max_iterations = 100;
   std::string scheme = "constant";  // "constant" | "aitken" | "iqn-ils"
+  // SPEC §12: IQN-ILS keeps the secant pairs of this many past time steps (windows).
+  int reuse = 0;
   // How ε follows the mesh: "fixed" (the case's ε on every level of a refinement
   // study) or "h^p" (ε · (h/h₀)^p, h the fluid size at the structure, h₀ the case's
   // own; a single run uses ε as given), or "layer": ε = (c h)²/μ_F with c =

@@ -11,6 +11,7 @@
 #include "fluid/fluid_field.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "fluid/stokes_residual.hpp"
+#include "fluid/time_derivative.hpp"
 #include "io/case.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "run/case_fields.hpp"
@@ -53,6 +54,8 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
 // the residual forces.
 void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f);
 MomentumModel momentum_model(const FluidParams& f);
+// time.scheme (SPEC §12) as the fluid's BDF.
+inline TimeScheme time_scheme(const TimeParams& p) { return p.scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::bdf1; }
 
 // One solve for `chi` (the fluid alone: around the structure at rest, or with no
 // structure), exact everywhere; SolverFailure "the fluid solve failed: ..." or on a

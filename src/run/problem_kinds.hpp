@@ -26,6 +26,8 @@ std::unique_ptr<Problem> time_fluid_problem(const Case& c, const RunOptions& opt
 // coupling.max_iterations = 0 the fluid alone around the structure at rest (SPEC §3).
 std::unique_ptr<Problem> penalised_fsi(const Case& c, const RunOptions& options);
 std::unique_ptr<Problem> penalised_fluid_at_rest(const Case& c, const RunOptions& options);
+// [time] with a structure and a penalised fluid: the coupled problem in time (run/time_fsi_problem.cpp).
+std::unique_ptr<Problem> time_penalised_fsi(const Case& c, const RunOptions& options);
 // fluid.method = "body-fitted" (run/body_fitted_problem.cpp): the same two kinds.
 std::unique_ptr<Problem> body_fitted_fsi(const Case& c, const RunOptions& options);
 std::unique_ptr<Problem> body_fitted_fluid_at_rest(const Case& c, const RunOptions& options);

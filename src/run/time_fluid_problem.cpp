@@ -44,8 +44,6 @@ struct Frame {
   FluidSolution state;
 };
 
-TimeScheme scheme_of(const TimeParams& p) { return p.scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::bdf1; }
-
 double max_speed(const FluidSolution& s) {
   return std::sqrt((s.v1.array().square() + s.v2.array().square()).maxCoeff());
 }
@@ -67,7 +65,7 @@ class TimeFluidProblem final : public Problem {
     const Mesh& mesh = *f_.mesh;
     PenalisedStokes& fluid = *f_.stokes;
     fluid.set_chi(Eigen::VectorXd::Zero(mesh.num_triangles()));  // no structure
-    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, scheme_of(time_), time_.dt, fluid_at_rest(mesh));
+    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, time_scheme(time_), time_.dt, fluid_at_rest(mesh));
     const auto data = [&](double t) {
       fluid.set_body_force(fluid_body_force(*c_.fluid, t));
       fluid.set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, t));

@@ -161,20 +161,7 @@ class TimeStructureProblem final : public Problem {
   }
 
   StructureRow row(int iterations) const {
-    StructureRow r;
-    r.step = state_.step;
-    r.t = state_.t;
-    r.qp_iterations = iterations;
-    r.active_nodes = state_.contact.qp.active_count();
-    r.max_u = max_displacement(state_.u);
-    r.kinetic = newmark_->kinetic_energy(state_.v);
-    r.elastic = elastic_energy(*s_.solver, state_.u);
-    r.work = work_;
-    r.velocity = newmark_->momentum(state_.v) / newmark_->mass();
-    if (state_.contact.qp.alpha.size())
-      r.contact_force = resultant(s_.solver->contact().C_S.transpose() * state_.contact.qp.alpha);
-    if (!probes_->empty()) r.probes = probes_->displacements(state_.u);
-    return r;
+    return structure_row(state_, *newmark_, s_, probes_.get(), work_, iterations);
   }
 
   const Case& c_;

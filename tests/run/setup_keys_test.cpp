@@ -59,7 +59,8 @@ std::string other_value(const std::string& key) {
                                                              {"time.output_every", "2"},
                                                              {"structure.rho", "1000"},
                                                              {"structure.v0", "[0.1, 0]"},
-                                                             {"structure.mass", "consistent"}};
+                                                             {"structure.mass", "consistent"},
+                                                             {"coupling.reuse", "3"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));

@@ -13,9 +13,28 @@ double total(const StructureRow& r) { return r.kinetic + r.elastic - r.work; }
 
 }  // namespace
 
+StructureRow structure_row(const NewmarkState& s, const Newmark& newmark, const StructureSetup& setup,
+                           const ProbeSet* probes, double work, int qp_iterations) {
+  StructureRow r;
+  r.step = s.step;
+  r.t = s.t;
+  r.qp_iterations = qp_iterations;
+  r.active_nodes = s.contact.qp.active_count();
+  r.max_u = max_displacement(s.u);
+  r.kinetic = newmark.kinetic_energy(s.v);
+  r.elastic = elastic_energy(*setup.solver, s.u);
+  r.work = work;
+  r.velocity = newmark.momentum(s.v) / newmark.mass();
+  if (s.contact.qp.alpha.size()) r.contact_force = resultant(setup.solver->contact().C_S.transpose() * s.contact.qp.alpha);
+  if (probes && !probes->empty()) r.probes = probes->displacements(s.u);
+  return r;
+}
+
 void write_structure_history(const std::string& path, const StructureRow& initial, const std::vector<StructureRow>& rows) {
   write_atomically(path, [&](std::ostream& out) {
+    const bool coupled = initial.passes >= 0;
     out << "step,t,qp_iterations,active_nodes,max_u,kinetic,elastic,work,energy_error,vx,vy,contact_fx,contact_fy";
+    if (coupled) out << ",passes,fluid_fx,fluid_fy";
     for (std::size_t i = 1; i <= initial.probes.size(); ++i) out << ",probe_" << i << "_ux,probe_" << i << "_uy";
     out << "\n";
     const double e0 = total(initial);
@@ -24,6 +43,7 @@ void write_structure_history(const std::string& path, const StructureRow& initia
           << "," << shortest(r.kinetic) << "," << shortest(r.elastic) << "," << shortest(r.work) << ","
           << shortest(total(r) - e0) << "," << shortest(r.velocity.x()) << "," << shortest(r.velocity.y()) << ","
           << shortest(r.contact_force.x()) << "," << shortest(r.contact_force.y());
+      if (coupled) out << "," << r.passes << "," << shortest(r.fluid_force.x()) << "," << shortest(r.fluid_force.y());
       for (const Point& p : r.probes) out << "," << shortest(p.x()) << "," << shortest(p.y());
       out << "\n";
     };

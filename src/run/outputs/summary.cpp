@@ -59,7 +59,7 @@ Json to_json(const FluidParams& f) {
 Json to_json(const CouplingParams& k) {
   return {{"eps", k.eps}, {"omega", k.omega}, {"tol", k.tol}, {"max_iterations", k.max_iterations},
           {"scheme", k.scheme}, {"eps_rule", k.eps_rule}, {"force", k.force},
-          {"force_sampling", k.force_sampling}};
+          {"force_sampling", k.force_sampling}, {"reuse", k.reuse}};
 }
 
 Json to_json(const ContactParams& c) { return {{"solver", c.solver}, {"gap", c.gap}, {"boundary", c.boundary}}; }

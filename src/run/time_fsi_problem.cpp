@@ -1,0 +1,240 @@
+// [time] with a structure and a penalised fluid (SPEC §12): the coupled problem
+// marched in time. Not yet reachable from a case file (io/case_checks.cpp refuses it:
+// tests/run/time_fsi_test.cpp says why and builds its Case itself). Each step t^n → t^{n+1}:
+//   the fluid's data at t^{n+1} and its history (FluidTimeStepper::begin);
+//   the structure's effective load b^{n+1} + M[(4/Δt²)(u^n + Δt u̇^n) + ü^n] (Newmark);
+//   the fixed point of §5 over u^{n+1} (FixedPointCoupling, one window a step: the
+//   relaxation's window ends, IQN-ILS keeping coupling.reuse steps' pairs), each pass
+//   the fluid's step at the pass's χ and structure velocity (TimePenalisedStep) and
+//   the contact problem with the operator A_S + (4/Δt²) M;
+//   from the predictor u^n + Δt u̇^n; then the fluid's and the structure's states advance.
+// What is reused from step to step: the fluid's pattern and symbolic factorisation
+// (χ and the time derivative change its values: one numeric factorisation per pass),
+// the structure's factorisation of A_S + (4/Δt²) M, the relaxation's secant pairs.
+// Outputs: the penalised run's final files (fluid.vtu, structure.vtu, fsi.png,
+// summary.json), history.csv one line per step, and the frames structure-NNNNNN.vtu
+// (deformed) and fluid-NNNNNN.vtu every time.output_every steps, in structure.pvd and
+// fluid.pvd.
+#include <cmath>
+#include <cstdio>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/interrupt.hpp"
+#include "coupling/fixed_point.hpp"
+#include "coupling/time_penalised_step.hpp"
+#include "io/vtu.hpp"
+#include "run/case_fields.hpp"
+#include "run/outputs/coupling_outputs.hpp"
+#include "run/outputs/fluid_outputs.hpp"
+#include "run/outputs/structure_history.hpp"
+#include "run/outputs/structure_outputs.hpp"
+#include "run/penalised_problem.hpp"
+#include "run/problem_kinds.hpp"
+#include "run/time_progress.hpp"
+
+namespace fsi {
+namespace {
+
+struct CoupledFrame {
+  double t = 0;
+  int step = 0;
+  ContactSolution structure;
+  FluidSolution fluid;
+  Eigen::VectorXd chi;
+};
+
+class TimePenalisedFsi final : public PenalisedProblem {
+ public:
+  TimePenalisedFsi(const Case& c, const RunOptions& options)
+      : PenalisedProblem(c, options), time_(*c.time), progress_(options.progress) {}
+
+  void solve(PhaseTimes& times) override {
+    Parts parts(*this);
+    newmark_ = std::make_unique<Newmark>(s_->mass, time_.dt, s_->solver->free_dofs());
+    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
+    b_last_ = s_->b_applied;
+    fluid_last_ = Eigen::VectorXd::Zero(dofs());
+    initial_ = row(0, 0);
+    frames_.push_back(frame(parts));
+    const int steps = time_.steps();
+    for (int k = 1; k <= steps; ++k) {
+      if ((interrupted_ = interrupt_requested())) break;
+      if (!step(parts, k, times)) break;
+      if (k % time_.output_every == 0 || k == steps) frames_.push_back(frame(parts));
+      progress_.report(k, steps, state_.t);
+    }
+    if (frames_.back().step != state_.step) frames_.push_back(frame(parts));  // what was computed
+    result_.structure = state_.contact;  // the final state the penalised run measures
+    if (interrupted_) result_.interrupted = true;
+    complete_fluid();
+  }
+
+  void summarise(RunResult& r) override {
+    PenalisedProblem::summarise(r);
+    Json& j = r.summary;
+    j["steps"] = state_.step;
+    j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme}, {"structure_scheme", "newmark"},
+                 {"mass", c_.structure.mass}, {"steps", state_.step}, {"t", state_.t}, {"frames", frames_.size()},
+                 {"passes", passes_json()}};
+    j["velocity"] = point_json(rows_.empty() ? initial_.velocity : rows_.back().velocity);
+    j["energy"] = energy_json(initial_, rows_);
+    j["contact_intervals"] = contact_intervals_json(initial_, rows_, time_.dt);
+  }
+
+ private:
+  // What the loop is made of, built once per run.
+  struct Parts {
+    explicit Parts(TimePenalisedFsi& p)
+        : force(p.fluid_force()),
+          M(assemble_vector_mass(p.s_->mesh())),
+          relaxation(make_relaxation(p.c_.coupling.scheme,
+                                     {.omega0 = p.c_.coupling.omega, .reused_windows = p.c_.coupling.reuse}, M)),
+          stepper(*p.f_->stokes, p.c_.fluid->rho, time_scheme(p.time_), p.time_.dt, fluid_at_rest(*p.f_->mesh)),
+          penalty(std::make_shared<PenaltyVelocityLoad>(p.f_->mesh->num_triangles(), p.f_->stokes->eps())),
+          fluid({p.s_->mesh(), *p.f_->stokes, stepper, *penalty, *p.f_->locator, *p.f_->chi, force, p.c_.fluid->rho}),
+          structure(*p.s_->solver, p.s_->gap.get()),
+          loop(fluid, structure, b_eff, *relaxation, M, p.c_.coupling.tol, p.c_.coupling.max_iterations) {
+      p.f_->stokes->add_term(penalty);
+    }
+    FluidForce force;
+    SparseMatrix M;  // L²(Ω_S0): the stop's and the relaxation's
+    std::unique_ptr<Relaxation> relaxation;
+    FluidTimeStepper stepper;
+    std::shared_ptr<PenaltyVelocityLoad> penalty;
+    TimePenalisedStep fluid;
+    StructureStep structure;
+    Eigen::VectorXd b_eff;  // the step's b^{n+1} + M[...], the loop's "applied" load
+    FixedPointCoupling loop;
+  };
+
+  int dofs() const { return 2 * s_->mesh().num_vertices(); }
+  Eigen::VectorXd initial_velocity() const {
+    const int n = s_->mesh().num_vertices();
+    Eigen::VectorXd v0(2 * n);
+    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
+    return v0;
+  }
+
+  // One time step; false (the run ends, the state at t^n kept) if its coupling failed
+  // or did not converge.
+  bool step(Parts& p, int k, PhaseTimes& times) {
+    const double t = k * time_.dt;
+    const Eigen::VectorXd b = structure_load_varies(c_) ? structure_load(c_, s_->mesh(), s_->p2(), t) : s_->b_applied;
+    p.b_eff = newmark_->effective_load(state_, b);
+    const Mesh& mesh = *f_->mesh;
+    p.stepper.begin([&](double tn) {
+      f_->stokes->set_body_force(fluid_body_force(*c_.fluid, tn));
+      f_->stokes->set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, tn));
+    });
+    p.fluid.begin_step(state_.u, state_.v);
+    const Eigen::VectorXd predictor = state_.u + time_.dt * state_.v;
+    CouplingResult r;
+    if (k == 1) {
+      p.loop.initial = predictor;
+      r = p.loop.run();
+    } else {
+      r = p.loop.next_window(predictor);
+    }
+    for (const auto& rec : r.history) {
+      times.add("fluid", rec.t_fluid), times.add("structure", rec.t_structure);
+      times.add("transfer", rec.t_transfer), times.add("chi", rec.t_chi);
+    }
+    const std::string when = "step " + std::to_string(k) + " (t = " + shortest(t) + " s): ";
+    if (!r.failure.empty() || !r.converged) {
+      result_ = r;
+      result_.structure = state_.contact;
+      if (!r.failure.empty()) result_.failure = when + r.failure;
+      else if (r.interrupted) interrupted_ = true;
+      return false;
+    }
+    p.stepper.accept();
+    // The applied loads' and the fluid's work over the step, trapezoidal in time.
+    const Eigen::VectorXd du = r.structure.u - state_.u;
+    work_ += 0.5 * (b_last_ + b).dot(du) + 0.5 * (fluid_last_ + r.fluid_load).dot(du);
+    b_last_ = b;
+    fluid_last_ = r.fluid_load;
+    const int passes = r.iterations;
+    result_ = std::move(r);
+    state_ = newmark_->advance(state_, result_.structure);
+    rows_.push_back(row(passes, state_.contact.qp.iterations));
+    return true;
+  }
+
+  StructureRow row(int passes, int qp_iterations) const {
+    StructureRow r = structure_row(state_, *newmark_, *s_, nullptr, work_, qp_iterations);
+    r.passes = passes;
+    r.fluid_force = resultant(fluid_last_);
+    return r;
+  }
+
+  CoupledFrame frame(const Parts& p) const {
+    return {state_.t, state_.step, state_.contact, p.stepper.state(), f_->stokes->chi()};
+  }
+
+  Json passes_json() const {
+    int total = 0, most = 0;
+    for (const StructureRow& r : rows_) total += r.passes, most = std::max(most, r.passes);
+    return {{"total", total}, {"mean", rows_.empty() ? 0.0 : double(total) / double(rows_.size())}, {"max", most}};
+  }
+
+  static std::string frame_name(const char* what, const CoupledFrame& f) {
+    char name[48];
+    std::snprintf(name, sizeof name, "%s-%06d.vtu", what, f.step);
+    return name;
+  }
+
+  void write_structure(RunOutputs& out, bool fluid_vtu_written) override {
+    write_coupled_files(out, c_, *s_, result_, fluid_ != nullptr, fluid_vtu_written, false);
+    out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
+    if (!c_.output.vtu) return;
+    std::vector<PvdEntry> structure, fluid;
+    for (const CoupledFrame& f : frames_) {
+      out.write(frame_name("structure", f), [&](const std::string& p) { write_structure_vtu(p, c_, *s_, f.structure, true); });
+      out.write(frame_name("fluid", f), [&](const std::string& p) { write_fluid_vtu(p, c_, *f_->mesh, f.fluid, f.chi); });
+      structure.push_back({frame_name("structure", f), 0, f.t});
+      fluid.push_back({frame_name("fluid", f), 0, f.t});
+    }
+    out.write("structure.pvd", [&](const std::string& p) { write_pvd(p, structure); });
+    out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p, fluid); });
+  }
+  const char* picture_name() const override { return "fsi.png"; }
+  std::string picture_state() const override { return "t = " + shortest(state_.t) + " s, " + time_.scheme; }
+  std::vector<int> contact_vertices() const override { return active_vertices(*s_->solver, state_.contact); }
+  void measure_structure(RunMeasures& m) override { measure_coupled_structure(m); }
+  void summarise_structure(Json& j, const RunMeasures& m) override { summarise_coupled_structure(j, m); }
+
+  std::string report(const RunMeasures& m) const override {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%s: fluid and structure in time (%s and Newmark, dt = %s s): %d steps to t = %s s, %.3g coupling "
+                  "passes a step on average; max displacement %.4g m at the end. Fluid %d triangles, structure %d.",
+                  c_.name.c_str(), time_.scheme.c_str(), shortest(time_.dt).c_str(), state_.step,
+                  shortest(state_.t).c_str(), passes_json()["mean"].get<double>(), m.displacement ? m.displacement->max : 0.0,
+                  m.fluid_mesh.triangles, m.structure_mesh.triangles);
+    std::string out = text;
+    if (!result_.failure.empty()) out += " Failed at " + result_.failure + ".";
+    else if (!result_.converged) out += " The coupling did not converge at step " + std::to_string(state_.step + 1) + ".";
+    if (interrupted_) out += " Interrupted.";
+    return out + " Results in " + c_.output.dir + "/.";
+  }
+
+  TimeParams time_;
+  TimeProgress progress_;
+  std::unique_ptr<Newmark> newmark_;
+  NewmarkState state_;
+  Eigen::VectorXd b_last_, fluid_last_;
+  double work_ = 0;
+  StructureRow initial_;
+  std::vector<StructureRow> rows_;
+  std::vector<CoupledFrame> frames_;
+  bool interrupted_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Problem> time_penalised_fsi(const Case& c, const RunOptions& options) {
+  return std::make_unique<TimePenalisedFsi>(c, options);
+}
+
+}  // namespace fsi
