@@ -100,12 +100,6 @@ Eigen::VectorXd FluidForce::to_samples(const Eigen::VectorXd& u) const {
 
 // Viscous, pressure, penalty and body-force terms of eq. (33), on the integrals' mesh,
 // then (sampling > 1) restricted to the structure's vertices: w = Σ P_ij φ_i^fine.
-Eigen::VectorXd FluidForce::mass_load(const Eigen::VectorXd& g) const {
-  if (g.size() != M_.cols()) throw std::invalid_argument("FluidForce::mass_load: one value per sample dof");
-  const Eigen::VectorXd load = M_ * g;
-  return refinement_ ? per_component(refinement_->P.transpose(), load) : load;
-}
-
 Eigen::VectorXd FluidForce::operator()(const SampledFluid& s, const Eigen::VectorXd& u) const {
   const Eigen::VectorXd uf = to_samples(u);
   check_sizes(s, uf, space_ ? space_->num_nodes() : mesh_.num_vertices());

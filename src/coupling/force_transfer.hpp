@@ -61,11 +61,6 @@ class FluidForce {
   // the space (2n, n, 2n; n the vertices for P1, the nodes for P2).
   Eigen::VectorXd operator()(const SampledFluid& s, const Eigen::VectorXd& u) const;
 
-  // ∫ g·w for a field g given at the samples (as SampledFluid::v), restricted as the
-  // load is: in time (SPEC §12) the penalty's structure velocity −(1/ε) ∫ ũ̇·w and the
-  // fluid's inertia ρ_F ∫ ∂ṽ/∂t·w, in eq. (33)'s small form (no J) for either model.
-  Eigen::VectorXd mass_load(const Eigen::VectorXd& g) const;
-
   // Where the fluid is sampled: the vertices of this mesh displaced by to_samples(u)
   // (the reference mesh and u itself unless sampling > 1; a P2 space's nodal mesh).
   const Mesh& sample_mesh() const { return space_ ? *nodes_ : mesh_; }

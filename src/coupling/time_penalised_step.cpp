@@ -1,10 +1,12 @@
 #include "coupling/time_penalised_step.hpp"
 
 #include <cstdio>
+#include <unordered_map>
 
 #include "common/errors.hpp"
 #include "common/timer.hpp"
 #include "coupling/phase_guard.hpp"
+#include "fem/p1.hpp"
 #include "fem/vector_p1.hpp"
 
 namespace fsi {
@@ -20,11 +22,13 @@ Eigen::VectorXd TimePenalisedStep::velocity(const Eigen::VectorXd& u) const {
 
 // χ_T ũ̇(x_T) on the fluid triangles with χ > 0, x_T the barycentre, ũ̇ interpolated in
 // the deformed structure's triangle that holds x_T (the nearest one's boundary point
-// for an area fraction's triangle whose barycentre lies outside).
+// for an area fraction's triangle whose barycentre lies outside); and χ_T div ũ̇ there
+// (constant on the structure's P1 triangle, in the deformed coordinates).
 Eigen::Matrix2Xd TimePenalisedStep::chi_velocity(const Eigen::VectorXd& chi, const Mesh& deformed,
-                                                 const Eigen::VectorXd& u_dot) {
+                                                 const Eigen::VectorXd& u_dot, Eigen::VectorXd& chi_div) {
   const Mesh& fluid = p_.fluid.mesh();
   Eigen::Matrix2Xd out = Eigen::Matrix2Xd::Zero(2, fluid.num_triangles());
+  chi_div = Eigen::VectorXd::Zero(fluid.num_triangles());
   inside_.clear();
   if (!(chi.array() > 0).any()) return out;
   const PointLocator inside(deformed);
@@ -36,59 +40,61 @@ Eigen::Matrix2Xd TimePenalisedStep::chi_velocity(const Eigen::VectorXd& chi, con
     const Location at = inside.locate_or_nearest(x);
     inside_.push_back({t, chi[t], at});
     const auto& s = deformed.triangles[at.triangle];
+    const P1Triangle S(deformed, at.triangle);
     for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) out(c, t) += chi[t] * at.lambda[a] * u_dot[dof(s[a], c, nv)];
+      for (int a = 0; a < 3; ++a) {
+        out(c, t) += chi[t] * at.lambda[a] * u_dot[dof(s[a], c, nv)];
+        chi_div[t] += chi[t] * S.grad(a, c) * u_dot[dof(s[a], c, nv)];
+      }
   }
   return out;
 }
 
-// (1/ε) Σ_T χ_T |T| (v_h(x_T) − ū_T)·φ_i(X_T) on the structure's dofs (chi_u: χ_T ū_T).
+// The penalty's reaction (1/ε) Σ_T χ_T ∫_T (v_h − ū_T)·w̃_i on the structure's dofs, w̃_i
+// the fluid-space interpolant of the structure's basis function φ_i (its values at the
+// fluid vertices, each located in the deformed structure or at its nearest point), the
+// integrals exact as the fluid's own mass term has them (P1 and bubble parts).
 Eigen::VectorXd TimePenalisedStep::penalty_force(const FluidSolution& v, const Eigen::Matrix2Xd& chi_u) const {
   const Mesh& fluid = p_.fluid.mesh();
-  const Mesh& structure = p_.structure;
-  const int nv = structure.num_vertices();
-  const FluidField field(p_.fluid_locator, v);
+  const int nv = p_.structure.num_vertices();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * nv);
+  const Mesh deformed = displaced(p_.structure, last_u_.head(nv), last_u_.tail(nv));
+  const PointLocator inside(deformed);
+  std::unordered_map<int, Location> at;  // fluid vertex → where w̃ is read
   for (const Inside& in : inside_) {
-    const Location centre{in.fluid, Eigen::Vector3d::Constant(1.0 / 3)};
-    const Point mismatch = in.chi * field.at(centre).v - chi_u.col(in.fluid);
-    const double weight = fluid.area(in.fluid) / p_.fluid.eps();
-    const auto& s = structure.triangles[in.at.triangle];
-    for (int c = 0; c < 2; ++c)
-      for (int a = 0; a < 3; ++a) f[dof(s[a], c, nv)] += weight * mismatch[c] * in.at.lambda[a];
+    const int t = in.fluid;
+    const auto& tri = fluid.triangles[t];
+    const double area = fluid.area(t), kappa = in.chi / p_.fluid.eps();
+    for (int a = 0; a < 3; ++a) {
+      Eigen::Vector2d q = -chi_u.col(t) / in.chi * (area / 3) + v.bubble.col(t) * bubble::p1_times_bubble(area);
+      for (int b = 0; b < 3; ++b) q += bubble::mass_p1(area, a, b) * Eigen::Vector2d(v.v1[tri[b]], v.v2[tri[b]]);
+      auto it = at.find(tri[a]);
+      if (it == at.end()) it = at.emplace(tri[a], inside.locate_or_nearest(fluid.vertices[tri[a]])).first;
+      const auto& s = deformed.triangles[it->second.triangle];
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 3; ++k) f[dof(s[k], c, nv)] += kappa * q[c] * it->second.lambda[k];
+    }
   }
   return f;
-}
-
-// ρ_F ∂ṽ/∂t at the samples: (α ṽ^{n+1} − β₁ ṽ^n − β₂ ṽ^{n−1}) ρ_F/Δt, each field read at
-// the deformed sample points.
-Eigen::VectorXd TimePenalisedStep::inertia_at(const std::vector<Location>& where, const FluidSolution& v_next) const {
-  const BdfWeights w = p_.stepper.weights();
-  const PointLocator& L = p_.fluid_locator;
-  Eigen::VectorXd d = w.alpha * sample_at(FluidField(L, v_next), where).v -
-                      w.beta1 * sample_at(FluidField(L, p_.stepper.state()), where).v;
-  if (w.beta2 != 0) d -= w.beta2 * sample_at(FluidField(L, p_.stepper.previous()), where).v;
-  return p_.rho / p_.stepper.dt() * d;
 }
 
 Eigen::VectorXd TimePenalisedStep::load(const Eigen::VectorXd& u, int k, IterationRecord& rec) {
   const Mesh& reference = p_.structure;
   const int nv = reference.num_vertices();
   const Eigen::VectorXd u_dot = velocity(u);  // on the structure's dofs (P2: its nodes)
+  last_u_ = u;
   {
     const Stopwatch clock;  // χ and the penalty's velocity at φ(Ω_S0)
     const Mesh deformed = displaced(reference, u.head(nv), u.tail(nv));
     const Eigen::VectorXd chi = p_.chi(deformed);
     p_.fluid.set_chi(chi);
-    p_.penalty.set(chi_velocity(chi, deformed, u_dot));
+    Eigen::VectorXd chi_div;
+    Eigen::Matrix2Xd chi_u = chi_velocity(chi, deformed, u_dot, chi_div);
+    p_.penalty.set(std::move(chi_u), std::move(chi_div));
     p_.fluid.terms_changed();
     rec.chi_triangles = static_cast<int>((chi.array() > 0).count());
     rec.t_chi = clock.elapsed();
   }
-  const Stopwatch located;
-  const std::vector<Location> where =
-      locate_deformed_vertices(p_.fluid_locator, p_.force.sample_mesh(), p_.force.to_samples(u));
-  const double t_locate = located.elapsed();
   const FluidSolution* fluid = nullptr;
   {
     const Stopwatch clock;
@@ -97,13 +103,9 @@ Eigen::VectorXd TimePenalisedStep::load(const Eigen::VectorXd& u, int k, Iterati
   }
   const Stopwatch clock;
   Eigen::VectorXd load = guarded("the force transfer", k, [&] {
-    const SampledFluid sampled = sample_at(FluidField(p_.fluid_locator, *fluid), where);
-    // Eq. (33) without its penalty term (1/ε) M ṽ, plus the inertia, plus the penalty's reaction.
-    const Eigen::VectorXd extra = -sampled.v / p_.fluid.eps() + inertia_at(where, *fluid);
-    return Eigen::VectorXd(p_.force(sampled, u) + p_.force.mass_load(extra) +
-                           penalty_force(*fluid, p_.penalty.chi_velocity()));
+    return penalty_force(*fluid, p_.penalty.chi_velocity());
   });
-  rec.t_transfer = clock.elapsed() + t_locate;
+  rec.t_transfer = clock.elapsed();
   return load;
 }
 

@@ -4,21 +4,23 @@
 //   χ of φ(Ω_S0); the structure's velocity by Newmark, ũ̇ = 2(u − u^n)/Δt − u̇^n, carried
 //   to the fluid triangles' barycentres inside the deformed structure (the penalty's
 //   load (1/ε) ∫ χ ũ̇·w, fluid/penalty_velocity.hpp); the fluid's step solved with the
-//   history of FluidTimeStepper::begin; and the load: eq. (33)'s viscous, pressure and
-//   body-force terms, the fictitious fluid's inertia ρ_F ∫ ∂ṽ/∂t·w (the BDF derivative
-//   at the deformed sample points), and the penalty's force as the fluid feels it,
-//       (1/ε) Σ_T χ_T |T| (v_h(x_T) − ū_T)·w(X_T)   (x_T the barycentre, X_T its
-//       reference point; one point per fluid triangle, where χ and ū are sampled),
-//   instead of eq. (33)'s (1/ε) ∫_{Ω_S0} ṽ·w. Why: in time ṽ − ũ̇ at the structure's
-//   boundary vertices, half outside χ, is O(ũ̇) and the 1/ε made it a spurious force,
-//   measured at 5 % of a falling beam's weight with a fluid of density and viscosity
-//   1e-6 (docs/validation.md); the fluid-side sum is the penalty's own reaction and
-//   vanishes with the fluid. The convection inside the structure, ρ_F (ṽ·∇)ṽ, is left
-//   out, as in the steady coupling (the fluid there moves with the structure).
+//   history of FluidTimeStepper::begin, the fluid inside χ taking the structure's
+//   dilatation (div v = χ div ũ̇: PenaltyVelocityLoad); and the fluid's force on the
+//   structure as the penalty's reaction,
+//       F_i = (1/ε) Σ_T χ_T ∫_T (v_h − ū_T)·w̃_i,
+//   w̃_i the fluid-space interpolant of the structure's basis function φ_i, integrated
+//   as the fluid's own mass term is. By the fluid's discrete momentum equation tested
+//   with w̃_i, this is exactly its viscous, pressure, inertial and body-force terms on
+//   w̃_i: the whole force of the fluid, in the fluid's own discretisation.
+// Why not eq. (33) as the steady coupling: in time its (1/ε) ∫_{Ω_S0} (ṽ − ũ̇)·w, the
+// fluid sampled at the structure's vertices, and its pressure term, on the structure's
+// mesh, leave a residue of order 1/ε that the two meshes' quadratures do not cancel: a
+// beam falling in a fluid of density and viscosity 1e-6 moved 0.9 % (5 % with the
+// penalty sampled at the vertices) off the structure alone at ε = 1e-5; with this
+// force it is 2e-5 (docs/validation.md, "The coupled time loop").
 #pragma once
 
 #include "coupling/coupled_map.hpp"
-#include "coupling/force_transfer.hpp"
 #include "fluid/chi.hpp"
 #include "fluid/fluid_time_stepper.hpp"
 #include "fluid/penalised_stokes.hpp"
@@ -35,8 +37,6 @@ class TimePenalisedStep final : public FluidStep {
     PenaltyVelocityLoad& penalty;  // added to `fluid` by the caller
     const PointLocator& fluid_locator;
     const ChiComputer& chi;
-    const FluidForce& force;
-    double rho;  // ρ_F
   };
   explicit TimePenalisedStep(Parts parts) : p_(parts) {}
 
@@ -55,13 +55,14 @@ class TimePenalisedStep final : public FluidStep {
     double chi = 0;     // its χ
     Location at;        // in the deformed (= reference) structure's triangles
   };
-  Eigen::Matrix2Xd chi_velocity(const Eigen::VectorXd& chi, const Mesh& deformed, const Eigen::VectorXd& u_dot);
+  Eigen::Matrix2Xd chi_velocity(const Eigen::VectorXd& chi, const Mesh& deformed, const Eigen::VectorXd& u_dot,
+                                Eigen::VectorXd& chi_div);
   Eigen::VectorXd penalty_force(const FluidSolution& v, const Eigen::Matrix2Xd& chi_u) const;
-  Eigen::VectorXd inertia_at(const std::vector<Location>& where, const FluidSolution& v_next) const;
 
   Parts p_;
   Eigen::VectorXd u_n_, v_n_;
   std::vector<Inside> inside_;  // the last pass's
+  Eigen::VectorXd last_u_;      // the last pass's state
 };
 
 }  // namespace fsi

@@ -94,7 +94,22 @@ Location PointLocator::locate_or_nearest(const Point& p) const {
     loc->lambda /= loc->lambda.sum();  // exactly on the boundary edge
     return *loc;
   }
-  throw std::logic_error("PointLocator: nearest boundary point not found in any triangle");
+  // A mesh whose triangles overlap or fold (a structure deformed beyond what it can
+  // take, in one fixed-point pass) can leave the nearest boundary point in none of
+  // them: the triangle among the nearest few whose coordinates are least negative,
+  // clamped onto it (paper-7.2-dynamic.toml to t = 3 s had ended in the exception).
+  std::vector<std::pair<BgBox, int>> near;
+  index_->triangles.query(bgi::nearest(BgPoint(q.x(), q.y()), 8), std::back_inserter(near));
+  std::optional<Location> best;
+  for (const auto& [box, t] : near) {
+    const Eigen::Vector3d l = P1Triangle(*mesh_, t).barycentric(q);
+    if (!best || l.minCoeff() > best->lambda.minCoeff()) best = Location{t, l};
+  }
+  if (!best) throw std::logic_error("PointLocator: mesh has no triangle");
+  best->lambda = best->lambda.cwiseMax(0.0);
+  if (!(best->lambda.sum() > 0)) best->lambda.setConstant(1.0 / 3);
+  best->lambda /= best->lambda.sum();
+  return *best;
 }
 
 std::vector<int> PointLocator::triangles_in_box(const Point& lo, const Point& hi) const {

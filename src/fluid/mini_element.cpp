@@ -88,6 +88,7 @@ CondensedElement condense(const MiniLocal& e, const ElementLoad& load) {
   out.K = e.M - e.E_col * A_bb_inv * e.E_row;
   out.F.setZero();
   out.F.head<6>() = load.F_V;
+  out.F.tail<3>() = load.F_P;
   out.F -= e.E_col * (A_bb_inv * load.F_b);
   return out;
 }

@@ -22,10 +22,13 @@ using Vector9d = Eigen::Matrix<double, 9, 1>;
 using Matrix29d = Eigen::Matrix<double, 2, 9>;
 using Matrix92d = Eigen::Matrix<double, 9, 2>;
 
-// Load integrals of one triangle, independent of χ: ∫ f·(λ_a e_c) and ∫ f_d b.
+// Load integrals of one triangle, independent of χ: ∫ f·(λ_a e_c) and ∫ f_d b; and the
+// continuity rows' right-hand side, ∫ g λ_a for −∫ (div v) q = ∫ g q (0 but where a
+// term prescribes a dilatation: the structure's inside χ in time, SPEC §12).
 struct ElementLoad {
   Eigen::Matrix<double, 6, 1> F_V = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Vector2d F_b = Eigen::Vector2d::Zero();
+  Eigen::Vector3d F_P = Eigen::Vector3d::Zero();
 };
 
 // ElementLoad of f on T by `rule` (degree 6 for the cubic bubble times a smooth f).
@@ -88,7 +91,7 @@ BubbleBlock bubble_block(const MiniLocal& e);
 
 struct CondensedElement {
   Matrix9d K;    // M − E_col A_bb⁻¹ E_row
-  Vector9d F;    // [F_V; 0] − E_col A_bb⁻¹ F_b
+  Vector9d F;    // [F_V; F_P] − E_col A_bb⁻¹ F_b
 };
 
 CondensedElement condense(const MiniLocal& e, const ElementLoad& load);

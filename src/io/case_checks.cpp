@@ -322,15 +322,6 @@ void check_no_structure(const Case& c, const Origin& o) {
 // A structure in time (SPEC §12): its density, and what its mass matrix allows.
 void check_structure_in_time(const Case& c, const Origin& origin) {
   const auto& s = c.structure;
-  // The coupled loop (run/time_fsi_problem.cpp) runs, but the incompressible fluid the
-  // penalty holds inside the structure resists its volume change by a force of order
-  // 1/ε: a falling beam moves 0.9–1.3 % off the structure alone with a fluid of density
-  // and viscosity 1e-6 at ε = 1e-5 (0.01 % at 1e-3; docs/validation.md). Refused until
-  // the continuity equation takes div ũ̇ inside χ.
-  if (c.fluid)
-    fail(origin, "time", "with a structure and a fluid is not available yet: the coupled time loop is built but "
-         "fails its consistency check (docs/validation.md, \"The coupled time loop\")",
-         "[time] with structure.shape = \"none\", or without [fluid]");
   if (c.fluid && c.fluid->method != "penalised")
     fail(origin, "fluid.method", "= \"" + c.fluid->method + "\" has no time stepping", "\"penalised\" with [time]");
   if (c.fluid && c.fluid->rho == 0)

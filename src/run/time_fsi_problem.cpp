@@ -1,6 +1,5 @@
 // [time] with a structure and a penalised fluid (SPEC §12): the coupled problem
-// marched in time. Not yet reachable from a case file (io/case_checks.cpp refuses it:
-// tests/run/time_fsi_test.cpp says why and builds its Case itself). Each step t^n → t^{n+1}:
+// marched in time. Each step t^n → t^{n+1}:
 //   the fluid's data at t^{n+1} and its history (FluidTimeStepper::begin);
 //   the structure's effective load b^{n+1} + M[(4/Δt²)(u^n + Δt u̇^n) + ü^n] (Newmark);
 //   the fixed point of §5 over u^{n+1} (FixedPointCoupling, one window a step: the
@@ -86,18 +85,16 @@ class TimePenalisedFsi final : public PenalisedProblem {
   // What the loop is made of, built once per run.
   struct Parts {
     explicit Parts(TimePenalisedFsi& p)
-        : force(p.fluid_force()),
-          M(assemble_vector_mass(p.s_->mesh())),
+        : M(assemble_vector_mass(p.s_->mesh())),
           relaxation(make_relaxation(p.c_.coupling.scheme,
                                      {.omega0 = p.c_.coupling.omega, .reused_windows = p.c_.coupling.reuse}, M)),
           stepper(*p.f_->stokes, p.c_.fluid->rho, time_scheme(p.time_), p.time_.dt, fluid_at_rest(*p.f_->mesh)),
           penalty(std::make_shared<PenaltyVelocityLoad>(p.f_->mesh->num_triangles(), p.f_->stokes->eps())),
-          fluid({p.s_->mesh(), *p.f_->stokes, stepper, *penalty, *p.f_->locator, *p.f_->chi, force, p.c_.fluid->rho}),
+          fluid({p.s_->mesh(), *p.f_->stokes, stepper, *penalty, *p.f_->locator, *p.f_->chi}),
           structure(*p.s_->solver, p.s_->gap.get()),
           loop(fluid, structure, b_eff, *relaxation, M, p.c_.coupling.tol, p.c_.coupling.max_iterations) {
       p.f_->stokes->add_term(penalty);
     }
-    FluidForce force;
     SparseMatrix M;  // L²(Ω_S0): the stop's and the relaxation's
     std::unique_ptr<Relaxation> relaxation;
     FluidTimeStepper stepper;
