@@ -182,7 +182,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
   }
 
   void write_structure(RunOutputs& out, bool fluid_vtu_written) override {
-    write_coupled_files(out, c_, *s_, result_, fluid_ != nullptr, fluid_vtu_written, false);
+    write_coupled_files(out, c_, *s_, result_, fluid_ != nullptr, fluid_vtu_written, false, false);
     out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
     if (!c_.output.vtu) return;
     std::vector<PvdEntry> structure, fluid;

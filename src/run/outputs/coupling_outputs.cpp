@@ -97,7 +97,7 @@ void add_coupled_structure(Json& j, const Case& c, const StructureSetup& s, cons
 }
 
 void write_coupled_files(RunOutputs& out, const Case& c, const StructureSetup& s, const CouplingResult& r,
-                         bool have_fluid, bool fluid_vtu_written, bool body_fitted) {
+                         bool have_fluid, bool fluid_vtu_written, bool body_fitted, bool passes_history) {
   if (c.output.vtu && have_fluid) {
     const bool structure_vtu = out.write("structure.vtu", [&](const std::string& p) {
       write_structure_vtu(p, c, s, r.structure, true);
@@ -107,7 +107,8 @@ void write_coupled_files(RunOutputs& out, const Case& c, const StructureSetup& s
   }
   if (c.output.png && have_fluid)
     out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c, s, r.structure); });
-  out.write("history.csv", [&](const std::string& p) { write_history(p, r.history, body_fitted); });
+  // A time run writes its own history.csv, one line a step (run/time_fsi_problem.cpp).
+  if (passes_history) out.write("history.csv", [&](const std::string& p) { write_history(p, r.history, body_fitted); });
 }
 
 }  // namespace fsi

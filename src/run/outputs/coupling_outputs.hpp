@@ -45,6 +45,6 @@ void add_coupled_structure(Json& j, const Case& c, const StructureSetup& s, cons
 // `fluid_vtu_written`; never a .pvd that names a missing file), structure.png (beside a
 // fluid picture: `have_fluid`), and history.csv (write_history).
 void write_coupled_files(RunOutputs& out, const Case& c, const StructureSetup& s, const CouplingResult& r,
-                         bool have_fluid, bool fluid_vtu_written, bool body_fitted);
+                         bool have_fluid, bool fluid_vtu_written, bool body_fitted, bool passes_history = true);
 
 }  // namespace fsi
