@@ -58,7 +58,7 @@ ASAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 instrumented-build: deps
 	@$(call configured,$(INSTRUMENTED)) || cmake -S . -B $(INSTRUMENTED) $(GENERATOR) \
 	  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Instrumented -DFSICONTACT_FUZZ=ON \
-	  -DFSICONTACT_BUILD_BENCH=OFF -DCMAKE_UNITY_BUILD=OFF > /dev/null
+	  -DFSICONTACT_BUILD_BENCH=OFF > /dev/null
 	@cmake --build $(INSTRUMENTED) -j $(JOBS)
 
 # The suite but its studies (tests/CMakeLists.txt) under the sanitizers, and its budget;

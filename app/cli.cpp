@@ -17,10 +17,21 @@ struct Streams {
   std::ostream& err;
 };
 
+// --resume DIR writes into DIR (it continues the run there): --out may name it too.
+std::string resumed_out_dir(const std::string& resume, const std::string& out_dir) {
+  if (resume.empty()) return out_dir;
+  if (!out_dir.empty() && out_dir != resume)
+    throw InputError("--resume " + resume + " writes into that directory; --out " + out_dir +
+                     " names another (omit --out, or give the same directory)");
+  return resume;
+}
+
 int run_command(const std::string& case_path, const std::vector<std::string>& sets, const std::string& out_dir,
-                bool quiet, Streams io) {
-  const Case c = load_case(case_path, sets, out_dir);  // --out taken verbatim, never parsed
+                const std::string& resume, bool quiet, Streams io) {
+  // --out taken verbatim, never parsed
+  const Case c = load_case(case_path, sets, resumed_out_dir(resume, out_dir));
   RunOptions options;
+  options.resume_dir = resume;
   if (!quiet) options.progress = [&io](const std::string& line) { io.err << line << '\n'; };
   const RunResult r = run_case(c, options);
   if (!r.report.empty()) io.out << r.report << std::endl;  // the numbers, even after a failure
@@ -78,7 +89,7 @@ int converge_command(const std::string& case_path, const std::vector<std::string
 // The values of the command line, bound to CLI11's options; --set, --out and
 // --quiet are shared by the subcommands.
 struct CliArgs {
-  std::string case_path, out_dir;
+  std::string case_path, out_dir, resume;
   std::vector<std::string> sets;
   bool quiet = false;
   std::string sweep_case, sweep_rows;
@@ -93,6 +104,10 @@ void add_run_command(CLI::App& app, CliArgs& a) {
   run->add_option("case", a.case_path, "case file (TOML); omit for the paper's section 7.2 case");
   run->add_option("--set", a.sets, "override a case key: section.key=value")->type_name("KEY=VALUE");
   run->add_option("--out", a.out_dir, "output directory (overrides output.dir; taken as it is)");
+  run->add_option("--resume", a.resume,
+                  "continue a time run from the checkpoint in this output directory (written at its end, when "
+                  "stopped, and every time.checkpoint_every steps), writing there")
+      ->type_name("DIR");
   run->add_flag("-q,--quiet", a.quiet, "no progress lines on stderr");
 }
 
@@ -132,7 +147,7 @@ int run_subcommand(const CliArgs& a, const CLI::App& sweep, const CLI::App& conv
     if (sweep.parsed()) return sweep_command(a.sweep_case, a.sweep_rows, a.sets, a.out_dir, a.keep_outputs, a.quiet, io);
     if (converge.parsed())
       return converge_command(a.converge_case, a.sets, a.out_dir, a.levels, a.ratio, a.schemes, a.refine, a.quiet, io);
-    return run_command(a.case_path, a.sets, a.out_dir, a.quiet, io);
+    return run_command(a.case_path, a.sets, a.out_dir, a.resume, a.quiet, io);
   } catch (const InputError& e) {
     io.err << "fsicontact: error: " << e.what() << std::endl;
     return 2;

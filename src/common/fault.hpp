@@ -14,4 +14,9 @@ namespace fsi {
 // a file size limit (ulimit -f) fails them for real.
 void fault_point(const char* phase);
 
+// A time run's step (SPEC §12): with FSICONTACT_FAULT=sigterm@N the process sends itself
+// SIGTERM at the end of step N, as a batch system's time limit would, so that the
+// checkpoint and --resume are tested against a real signal at a known step.
+void fault_step(int step);
+
 }  // namespace fsi

@@ -110,6 +110,30 @@ class IqnIlsRelaxation final : public Relaxation {
   }
   double omega() const override { return omega_; }
   std::string name() const override { return "iqn-ils"; }
+  State saved() const override {
+    State s = Relaxation::saved();
+    const Eigen::Index n = V_.empty() ? 0 : V_[0].size(), k = static_cast<Eigen::Index>(V_.size());
+    Eigen::VectorXd V(n * k), W(n * k), windows(k);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      V.segment(j * n, n) = V_[static_cast<std::size_t>(j)], W.segment(j * n, n) = W_[static_cast<std::size_t>(j)];
+      windows[j] = window_of_[static_cast<std::size_t>(j)];
+    }
+    s["V"] = V, s["W"] = W, s["column_windows"] = windows, s["window"] = Eigen::VectorXd::Constant(1, window_);
+    return s;
+  }
+  void restore(const State& s) override {
+    Relaxation::restore(s);
+    const Eigen::VectorXd &V = s.at("V"), &W = s.at("W"), &windows = s.at("column_windows");
+    const Eigen::Index k = windows.size(), n = k ? V.size() / k : 0;
+    if (V.size() != n * k || W.size() != n * k) throw std::invalid_argument("iqn-ils: restored columns of unequal sizes");
+    V_.clear(), W_.clear(), window_of_.clear();
+    for (Eigen::Index j = 0; j < k; ++j) {
+      V_.push_back(V.segment(j * n, n)), W_.push_back(W.segment(j * n, n));
+      window_of_.push_back(static_cast<int>(windows[j]));
+    }
+    window_ = static_cast<int>(s.at("window")[0]);
+    previous_r_.resize(0), previous_H_.resize(0);
+  }
   // Columns are tagged with their window; those older than reused_windows go.
   void end_window() override {
     previous_r_.resize(0);

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -39,6 +40,14 @@ class Relaxation {
   // the (V, W) columns kept for RelaxationOptions::reused_windows windows (0: dropped).
   // The steady problem has one window and never calls it.
   virtual void end_window() {}
+
+  // What it carries from one time window to the next, as named arrays (a time run's
+  // checkpoint, SPEC §12; run/time_checkpoint.hpp): the projections' count, and
+  // IQN-ILS's kept columns with their windows. Constant and Aitken carry nothing more
+  // (Aitken starts each window at ω0). restore() takes what saved() gave.
+  using State = std::map<std::string, Eigen::VectorXd>;
+  virtual State saved() const { return {{"projections", Eigen::VectorXd::Constant(1, projections_)}}; }
+  virtual void restore(const State& s) { projections_ = static_cast<int>(s.at("projections")[0]); }
 
  protected:
   int projections_ = 0;

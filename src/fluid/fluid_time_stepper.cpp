@@ -56,6 +56,15 @@ void FluidTimeStepper::accept() {
   std::swap(v_n_, v_nm1_);
   ++steps_;
   solved_ = false;
+  stepped_ = true;
+}
+
+void FluidTimeStepper::restore(int steps, const FluidSolution& v_n, const FluidSolution& v_nm1) {
+  if (steps < 0) throw std::invalid_argument("FluidTimeStepper::restore: a negative step count");
+  *v_n_ = v_n, *v_nm1_ = v_nm1;
+  v_n_->exact_on = v_nm1_->exact_on = nullptr;
+  steps_ = steps;
+  solved_ = stepped_ = false;
 }
 
 }  // namespace fsi

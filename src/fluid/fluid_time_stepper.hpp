@@ -40,13 +40,17 @@ class FluidTimeStepper {
   const FluidSolution& previous() const { return *v_nm1_; }
   BdfWeights weights() const { return bdf_weights(scheme_, steps_); }
 
+  // A resumed run (SPEC §12 checkpoints): the state after `steps` steps, v^n and v^{n−1}
+  // as the interrupted run had them. last_step_inertia() is null until the next step.
+  void restore(int steps, const FluidSolution& v_n, const FluidSolution& v_nm1);
+
   double time() const { return t0_ + steps_ * dt_; }  // not a running sum: t_end arrives to the digit
   int steps() const { return steps_; }
   double dt() const { return dt_; }
   const FluidSolution& state() const { return *v_n_; }
   // ρ∂v/∂t of the last step taken, its history kept: the residual forces at state()
   // need it (MomentumModel::inertia). Null before the first step.
-  const FluidTimeDerivative* last_step_inertia() const { return steps_ > 0 ? derivative_.get() : nullptr; }
+  const FluidTimeDerivative* last_step_inertia() const { return stepped_ ? derivative_.get() : nullptr; }
 
  private:
   PenalisedStokes& fluid_;
@@ -54,6 +58,7 @@ class FluidTimeStepper {
   double dt_, t0_;
   int steps_ = 0;
   bool solved_ = false;  // the step begun has a solution in spare_
+  bool stepped_ = false;  // derivative_ holds the last step's history (a step taken since the start or restore)
   std::shared_ptr<FluidTimeDerivative> derivative_;
   // v^n, v^{n−1}, and the buffer the next solution goes to (the last step's v^{n−1},
   // which its time derivative still reads until the next step).

@@ -33,6 +33,12 @@ void NewtonSolve::new_run() {
   report_ = FluidNewtonReport{};
 }
 
+void NewtonSolve::start_from(const FluidSolution& last) {
+  w_ = last;
+  w_.exact_on = nullptr;
+  started_ = true;
+}
+
 // Assembles K(w) and b(w) in Newton's form (the next step reuses them) and returns
 // ‖K(w) x_w − b(w)‖ and its scale max(‖b(0)‖, ‖b(w)‖): the data, or the inertia's
 // share of the right-hand side where it is the larger (round-off grows with it).

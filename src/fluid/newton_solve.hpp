@@ -58,6 +58,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   // A new run starts from v = 0 again (its numbers must not depend on the last run's).
   void new_run() override;
   void load_changed() override { scale_ = 0; }
+  void start_from(const FluidSolution& last) override;
   const FluidNewtonReport& report() const { return report_; }
   const NewtonOptions& options() const { return options_; }
 

@@ -89,6 +89,9 @@ class PenalisedStokes {
   // start, at another ε): the substructured solve keeps the last near region and its
   // far-field factorisation (χ = 0 there: they hold for any ε) if it covers the first χ.
   void continue_last_run() { strategy_->continue_last_run(); }
+  // A resumed time run: the next solve starts where the interrupted run's would have
+  // (StokesSolveStrategy::start_from: Newton's iterate, `last`).
+  void start_from(const FluidSolution& last) { strategy_->start_from(last); }
 
   // Solves for the current problem; if nothing of it (χ, ε, the load) changed since
   // the last solve, returns the previous solution without refactorising. The fields

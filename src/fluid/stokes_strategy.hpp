@@ -55,6 +55,10 @@ class StokesSolveStrategy {
   // The new run starts from the last run's state (a warm start): what the last run
   // ended with may serve its first solve (see the strategy).
   virtual void continue_last_run() {}
+  // A resumed time run (SPEC §12 checkpoints): `last` is the solution the interrupted
+  // run's last solve ended with, which its next solve would have started from
+  // (Newton's iterate), so that the resumed run takes the same steps to the same bits.
+  virtual void start_from(const FluidSolution& /*last*/) {}
   virtual std::string name() const = 0;
   // Whether it factors symmetric systems only (PenalisedStokes::solve refuses an
   // unsymmetric K then, naming it).

@@ -292,6 +292,7 @@ void read_time(const toml::table& root, const Origin& origin, Case& c, std::vect
   p.t_end = s.number("t_end", p.t_end, kSize);
   p.scheme = s.choice("scheme", p.scheme, {"bdf1", "bdf2"});
   p.output_every = s.integer("output_every", p.output_every, 1, 1000000000);
+  p.checkpoint_every = s.integer("checkpoint_every", p.checkpoint_every, 0, 1000000000);
   s.reject_unknown();
   if (known) return;
   for (const char* key : {"dt", "t_end"})
@@ -309,6 +310,11 @@ void read_time(const toml::table& root, const Origin& origin, Case& c, std::vect
   if (p.t_end / p.dt > max_steps)
     fail(origin, "time.t_end", "/ time.dt = " + shortest(p.t_end / p.dt) + " steps is over the limit",
          "at most " + shortest(max_steps) + " steps");
+  const double frames = std::floor(p.t_end / p.dt / p.output_every) + 1, max_frames = case_limits().time_frames;
+  if (frames > max_frames)
+    fail(origin, "time.output_every", "= " + std::to_string(p.output_every) + " writes " + shortest(frames) +
+         " frames, over the limit", "at least " + shortest(std::ceil(p.t_end / p.dt / (max_frames - 1))) +
+         " (at most " + shortest(max_frames) + " frames)");
   c.time = p;
 }
 
@@ -511,7 +517,8 @@ std::string to_toml(const Case& c) {
   t.insert("output", output);
   if (c.time)
     t.insert("time", toml::table{{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
-                                 {"output_every", c.time->output_every}});
+                                 {"output_every", c.time->output_every},
+                                 {"checkpoint_every", c.time->checkpoint_every}});
   std::ostringstream out;
   out << t << "\n";
   return out.str();

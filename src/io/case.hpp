@@ -182,6 +182,9 @@ struct TimeParams {
   double t_end = 0;             // time.t_end (s), required; the run takes round(t_end/dt) steps
   std::string scheme = "bdf1";  // time.scheme: "bdf1" | "bdf2" (the fluid's)
   int output_every = 1;         // time.output_every: steps between written frames
+  // time.checkpoint_every: steps between checkpoints (checkpoint.bin, --resume); 0: one
+  // at the run's end only (also when it is stopped or fails: the last good state).
+  int checkpoint_every = 0;
   int steps() const { return static_cast<int>(std::llround(t_end / dt)); }
 };
 
@@ -241,6 +244,7 @@ struct CaseLimits {
   double fluid_triangles = 4.0e6;      // memory of the factorisation
   int max_iterations = 100000;
   double time_steps = 1.0e6;  // time.t_end / time.dt
+  double time_frames = 1.0e5;  // written frames: time.t_end / time.dt / time.output_every + 1
 };
 // The limits in force: the defaults above; the command-line fuzzer lowers them so
 // that each of its inputs runs in milliseconds (fuzz/fuzz_cli.cpp).

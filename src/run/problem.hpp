@@ -8,15 +8,19 @@
 //                          structure, coupled   exit status)   keys, report)    beside
 //                          fluid)     loop)                                     summary.json)
 //
-// A time-dependent kind (SPEC §12) will be one more type whose solve is the loop over
-// time windows (each window the coupling's fixed point) and whose write adds the
-// time series; run() stays as it is.
+// A time-dependent kind (SPEC §12) is one more type whose solve is the loop over time
+// steps (each the coupling's window) and which writes as it goes: its frames and
+// checkpoints reach the output directory during solve(), which run() opens for it
+// after set_up (streams(), open()); a resumed run (resume()) keeps the frames up to its
+// checkpoint's step there.
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "common/timer.hpp"
 #include "io/case.hpp"
+#include "io/checkpoint.hpp"
 
 namespace fsi {
 
@@ -43,6 +47,17 @@ class Problem {
   // The files beside summary.json (fields, pictures, history.csv, case.toml); a failed
   // write is recorded by `out`, not thrown.
   virtual void write(RunOutputs& out) = 0;
+
+  // Whether it writes during solve() (a time run): run() then opens the directory
+  // after set_up() and calls open() before solve().
+  virtual bool streams() const { return false; }
+  virtual void open(RunOutputs& /*out*/) {}
+  // --resume: continue from `k`, a checkpoint of this case and kind
+  // (run/time_checkpoint.hpp); before set_up(). A steady kind refuses (InputError).
+  virtual void resume(Checkpoint k);
+  // A resumed run keeps its checkpoint and its frame files up to this step (−1: none
+  // listed); nullopt: not resumed.
+  virtual std::optional<int> resumed_frames_to() const { return std::nullopt; }
 };
 
 }  // namespace fsi

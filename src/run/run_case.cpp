@@ -1,11 +1,13 @@
 #include "run/run_case.hpp"
 
 #include <new>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "io/output_path.hpp"
 #include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
+#include "run/time_checkpoint.hpp"
 
 namespace fsi {
 namespace {
@@ -42,10 +44,12 @@ void fail_writing(RunResult& r, const std::string& what) {
 // problem's files (the "output" phase), then r.summary with its "timing_s". A failed
 // write turns r into a failure (exit status 1) naming the file and the reason; the
 // report keeps the numbers.
-void write_outputs(Problem& problem, const Case& c, RunResult& r, PhaseTimes& times, const Stopwatch& total) {
-  RunOutputs out(c.output.dir);
+void write_outputs(Problem& problem, const Case& c, RunResult& r, PhaseTimes& times, const Stopwatch& total,
+                   RunOutputs* opened) {
+  RunOutputs fresh(c.output.dir);
+  RunOutputs& out = opened ? *opened : fresh;
   try {
-    out.begin(summary_header(c, problem.kind()));
+    if (!opened) out.begin(summary_header(c, problem.kind()));
     {
       ScopedPhase phase(times, "output");
       problem.write(out);
@@ -63,11 +67,17 @@ RunResult run_steps(Problem& problem, const Case& c) {
   PhaseTimes times;
   const Stopwatch total;
   problem.set_up(times);
+  std::optional<RunOutputs> streamed;
+  if (problem.streams()) {
+    streamed.emplace(c.output.dir);
+    streamed->begin(summary_header(c, problem.kind()), problem.resumed_frames_to());
+    problem.open(*streamed);
+  }
   problem.solve(times);
   RunResult r;
   problem.measure(r);
   problem.summarise(r);
-  write_outputs(problem, c, r, times, total);
+  write_outputs(problem, c, r, times, total, streamed ? &*streamed : nullptr);
   return r;
 }
 
@@ -97,9 +107,17 @@ RunResult run(Problem& problem, const Case& c) {
   }
 }
 
+void Problem::resume(Checkpoint k) {
+  throw InputError(k.source + ": --resume continues a time run, and this case has no [time] section");
+}
+
 RunResult run_case(const Case& c, const RunOptions& options) {
   check_output_dir(c.output.dir, c.output.dir_origin);
   const std::unique_ptr<Problem> problem = make_problem(c, options);
+  if (!options.resume_dir.empty()) {
+    if (!c.time) throw InputError("--resume " + options.resume_dir + ": " + c.source + " has no [time] section to resume");
+    problem->resume(read_resume_checkpoint(options.resume_dir, c, problem->kind()));
+  }
   return run(*problem, c);
 }
 

@@ -21,6 +21,9 @@ struct RunOptions {
   SetupCache* cache = nullptr;  // reuse meshes and setups across runs (sweeps)
   // The coupled run's u⁰ (FixedPointCoupling::initial); null: the structure at rest.
   const Eigen::VectorXd* initial_displacement = nullptr;
+  // A time run continued from this directory's checkpoint (`fsicontact run --resume`);
+  // empty: from t = 0. The case's output.dir must be this directory.
+  std::string resume_dir;
 };
 
 struct RunResult {

@@ -6,11 +6,12 @@
 // fluid-NNNNNN.vtu every time.output_every steps and the last, listed with their
 // times in fluid.pvd, the last state's fluid.vtu and fluid.png, and summary.json with
 // the final state, the steps and each obstacle's extreme forces with their times.
-// The frames' solutions are kept until write() (run() writes files after the solve):
-// a frame costs (3 nv + 2 nt) doubles, 3 MB at 100k triangles.
+// The frames and checkpoint.bin are written as the run goes (run/time_run.hpp), as
+// the structure's time run does; --resume continues from the checkpoint.
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -26,7 +27,11 @@
 #include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
+#include "common/fault.hpp"
+#include "run/outputs/frame_series.hpp"
+#include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
+#include "run/time_run.hpp"
 
 namespace fsi {
 namespace {
@@ -38,26 +43,26 @@ struct StepRow {
   std::vector<Point> forces;  // per obstacle
 };
 
-struct Frame {
-  double t = 0;
-  int step = 0;
-  FluidSolution state;
-};
-
 double max_speed(const FluidSolution& s) {
   return std::sqrt((s.v1.array().square() + s.v2.array().square()).maxCoeff());
 }
 
 class TimeFluidProblem final : public Problem {
  public:
-  TimeFluidProblem(const Case& c, const RunOptions& options) : c_(c), time_(*c.time), progress_(options.progress) {}
+  TimeFluidProblem(const Case& c, const RunOptions& options)
+      : c_(c), time_(*c.time), progress_(options.progress), run_(c, kind()) {}
   const char* kind() const override { return "fluid"; }
+  bool streams() const override { return true; }
+  void open(RunOutputs& out) override { run_.open(out); }
+  void resume(Checkpoint k) override { run_.resume(std::move(k)); }
+  std::optional<int> resumed_frames_to() const override { return run_.resumed_frames_to(); }
 
   // The fluid's own set-up, never the cache's: the time derivative is added to it.
   void set_up(PhaseTimes& times) override {
     Mesh mesh = in_phase(times, "mesh", [&] { return make_fluid_mesh(c_); });
     stats_ = statistics(mesh);
     f_ = in_phase(times, "fluid", [&] { return make_fluid(c_, std::move(mesh), c_.coupling.eps); });
+    if (const Checkpoint* k = run_.resumed()) restore(*k);  // checked before anything is written
   }
 
   void solve(PhaseTimes& times) override {
@@ -70,9 +75,16 @@ class TimeFluidProblem final : public Problem {
       fluid.set_body_force(fluid_body_force(*c_.fluid, t));
       fluid.set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, t));
     };
-    frames_.push_back({0.0, 0, stepper_->state()});
+    if (restored_) {
+      stepper_->restore(restored_->step, restored_->v_n, restored_->v_nm1);
+      if (restored_->step > 0) fluid.start_from(restored_->v_n);  // Newton's next start
+      restored_.reset();
+    } else {
+      add_frame();
+    }
     const int steps = time_.steps();
-    for (int k = 1; k <= steps; ++k) {
+    progress_.start_after(stepper_->steps());
+    for (int k = run_.first_step(); k <= steps; ++k) {
       if (interrupt_requested()) {
         interrupted_ = true;
         break;
@@ -86,11 +98,15 @@ class TimeFluidProblem final : public Problem {
         break;
       }
       rows_.push_back(row());
-      if (k % time_.output_every == 0 || k == steps) frames_.push_back({stepper_->time(), k, stepper_->state()});
+      if (run_.frame_due(k)) add_frame();
+      if (run_.checkpoint_due(k)) save();
+      fault_step(k);
       progress_.report(k, steps, stepper_->time());
     }
-    if ((failure_.size() || interrupted_) && rows_.size() && frames_.back().step != stepper_->steps())
-      frames_.push_back({stepper_->time(), stepper_->steps(), stepper_->state()});  // what was computed
+    save();  // the run's end, also when stopped or failed: --resume continues from it
+    // What was computed, as a frame too (the checkpoint lists the regular frames only: a
+    // resumed run writes the series an uninterrupted run would have).
+    if ((interrupted_ || !failure_.empty()) && frames_.last_step() != stepper_->steps()) add_frame();
   }
 
   void measure(RunResult& r) override {
@@ -104,6 +120,7 @@ class TimeFluidProblem final : public Problem {
     else if (interrupted_) r.exit_status = interrupted_exit_status();
   }
 
+
   void summarise(RunResult& r) override {
     Json& j = r.summary;
     j = summary_header(c_, kind());
@@ -113,6 +130,7 @@ class TimeFluidProblem final : public Problem {
     j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme},
                  {"steps", stepper_ ? stepper_->steps() : 0}, {"t", stepper_ ? stepper_->time() : 0.0},
                  {"frames", frames_.size()}};
+    if (run_.resumed()) j["resumed"] = run_.resumed_json(c_.output.dir);
     j["obstacles"] = obstacles_json();
     const FluidSolution* last = rows_.empty() ? nullptr : &stepper_->state();
     if (!c_.output.fluid_probes.empty()) j["fluid_at"] = fluid_probes_json(c_, *f_.mesh, last);
@@ -128,11 +146,9 @@ class TimeFluidProblem final : public Problem {
 
   void write(RunOutputs& out) override {
     out.write("history.csv", [&](const std::string& p) { write_history(p); });
-    if (c_.output.vtu && !frames_.empty()) {
-      for (const Frame& frame : frames_)
-        out.write(frame_name(frame), [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frame.state, chi()); });
-      out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p, pvd_entries()); });
-      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, frames_.back().state, chi()); });
+    if (c_.output.vtu && stepper_) {
+      frames_.write_collection(out);
+      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
     }
     if (c_.output.png && !rows_.empty())
       out.write("fluid.png", [&](const std::string& p) {
@@ -145,10 +161,43 @@ class TimeFluidProblem final : public Problem {
 
  private:
   Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(f_.mesh->num_triangles()); }
-  static std::string frame_name(const Frame& f) {
-    char name[32];
-    std::snprintf(name, sizeof name, "fluid-%06d.vtu", f.step);
-    return name;
+  void add_frame() {
+    if (!c_.output.vtu || !run_.out()) return;
+    frames_.add(*run_.out(), stepper_->steps(), stepper_->time(),
+                [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
+  }
+
+  // The stepper's v^n and v^{n−1}, the rows (each a step's t, Newton's steps, the
+  // largest speed and the obstacles' forces) and the frames.
+  void save() const {
+    if (!stepper_) return;
+    run_.write_checkpoint(stepper_->steps(), stepper_->time(), [&](Checkpoint& k) {
+      put_fluid(k, "v_n", stepper_->state());
+      put_fluid(k, "v_nm1", stepper_->previous());
+      const long width = 3 + 2 * static_cast<long>(obstacle_hole_names(c_).size());
+      Eigen::MatrixXd rows(width, static_cast<long>(rows_.size()));
+      for (std::size_t i = 0; i < rows_.size(); ++i) {
+        rows(0, long(i)) = rows_[i].t, rows(1, long(i)) = rows_[i].newton_steps, rows(2, long(i)) = rows_[i].max_speed;
+        for (std::size_t o = 0; o < rows_[i].forces.size(); ++o) rows.block(3 + 2 * long(o), long(i), 2, 1) = rows_[i].forces[o];
+      }
+      k.put_matrix("rows", rows);
+      frames_.save(k);
+    });
+  }
+  void restore(const Checkpoint& k) {
+    const int nv = f_.mesh->num_vertices(), nt = f_.mesh->num_triangles();
+    restored_ = Restored{k.step, get_fluid(k, "v_n", nv, nt), get_fluid(k, "v_nm1", nv, nt)};
+    const Eigen::MatrixXd rows = k.matrix("rows");
+    const long obstacles = static_cast<long>(obstacle_hole_names(c_).size());
+    if (rows.rows() != 3 + 2 * obstacles || rows.cols() != k.step)
+      throw InputError(k.source + ": its rows do not fit this case (a damaged checkpoint)");
+    rows_.clear();
+    for (long i = 0; i < rows.cols(); ++i) {
+      StepRow r{rows(0, i), int(rows(1, i)), rows(2, i), {}};
+      for (long o = 0; o < obstacles; ++o) r.forces.emplace_back(rows(3 + 2 * o, i), rows(4 + 2 * o, i));
+      rows_.push_back(r);
+    }
+    frames_.restore(k);
   }
 
   // This step's row: the forces with the step's ρ∂v/∂t and f_F at its time.
@@ -206,23 +255,22 @@ class TimeFluidProblem final : public Problem {
     });
   }
 
-  // ParaView's collection: each frame's file with its time.
-  std::vector<PvdEntry> pvd_entries() const {
-    std::vector<PvdEntry> entries;
-    for (const Frame& frame : frames_) entries.push_back({frame_name(frame), 0, frame.t});
-    return entries;
-  }
-
   const Case& c_;
   TimeParams time_;
   MeshStatistics stats_;
   FluidSetup f_;
   std::unique_ptr<FluidTimeStepper> stepper_;
   std::vector<StepRow> rows_;
-  std::vector<Frame> frames_;
+  FrameSeries frames_{"fluid"};
   std::string failure_;
   bool interrupted_ = false;
   TimeProgress progress_;
+  TimeRun run_;
+  struct Restored {
+    int step;
+    FluidSolution v_n, v_nm1;
+  };
+  std::optional<Restored> restored_;  // a checkpoint's state, until solve() gives it to the stepper
 };
 
 }  // namespace

@@ -11,11 +11,13 @@
 // (χ and the time derivative change its values: one numeric factorisation per pass),
 // the structure's factorisation of A_S + (4/Δt²) M, the relaxation's secant pairs.
 // Outputs: the penalised run's final files (fluid.vtu, structure.vtu, fsi.png,
-// summary.json), history.csv one line per step, and the frames structure-NNNNNN.vtu
-// (deformed) and fluid-NNNNNN.vtu every time.output_every steps, in structure.pvd and
-// fluid.pvd.
+// summary.json), history.csv one line per step, and, written as the run goes
+// (run/time_run.hpp), the frames structure-NNNNNN.vtu (deformed) and fluid-NNNNNN.vtu
+// every time.output_every steps, in structure.pvd and fluid.pvd, and checkpoint.bin
+// (--resume): the states of both, the relaxation's kept secant pairs, the history.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -30,40 +32,52 @@
 #include "run/outputs/structure_outputs.hpp"
 #include "run/penalised_problem.hpp"
 #include "run/problem_kinds.hpp"
+#include "common/fault.hpp"
+#include "run/outputs/frame_series.hpp"
+#include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
+#include "run/time_run.hpp"
 
 namespace fsi {
 namespace {
 
-struct CoupledFrame {
-  double t = 0;
-  int step = 0;
-  ContactSolution structure;
-  FluidSolution fluid;
-  Eigen::VectorXd chi;
-};
-
 class TimePenalisedFsi final : public PenalisedProblem {
  public:
   TimePenalisedFsi(const Case& c, const RunOptions& options)
-      : PenalisedProblem(c, options), time_(*c.time), progress_(options.progress) {}
+      : PenalisedProblem(c, options), time_(*c.time), progress_(options.progress), run_(c, "fsi") {}
+  bool streams() const override { return true; }
+  void open(RunOutputs& out) override { run_.open(out); }
+  void resume(Checkpoint k) override { run_.resume(std::move(k)); }
+  std::optional<int> resumed_frames_to() const override { return run_.resumed_frames_to(); }
+
+  void set_up(PhaseTimes& times) override {
+    PenalisedProblem::set_up(times);
+    if (const Checkpoint* k = run_.resumed()) restore(*k);  // checked before anything is written
+  }
 
   void solve(PhaseTimes& times) override {
     Parts parts(*this);
     newmark_ = std::make_unique<Newmark>(s_->mass, time_.dt, s_->solver->free_dofs());
-    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
-    b_last_ = s_->b_applied;
-    fluid_last_ = Eigen::VectorXd::Zero(dofs());
-    initial_ = row(0, 0);
-    frames_.push_back(frame(parts));
+    if (restored_) continue_from(parts);
+    else start(parts);
     const int steps = time_.steps();
-    for (int k = 1; k <= steps; ++k) {
+    progress_.start_after(state_.step);
+    bool stepped = false;
+    for (int k = run_.first_step(); k <= steps; ++k) {
       if ((interrupted_ = interrupt_requested())) break;
       if (!step(parts, k, times)) break;
-      if (k % time_.output_every == 0 || k == steps) frames_.push_back(frame(parts));
+      stepped = true;
+      if (run_.frame_due(k)) add_frame(parts);
+      if (run_.checkpoint_due(k)) save(parts);
+      fault_step(k);
       progress_.report(k, steps, state_.t);
     }
-    if (frames_.back().step != state_.step) frames_.push_back(frame(parts));  // what was computed
+    save(parts);  // the run's end, also when stopped or failed: --resume continues from it
+    // What was computed, as a frame too (the checkpoint lists the regular frames only: a
+    // resumed run writes the series an uninterrupted run would have).
+    if ((interrupted_ || !result_.failure.empty() || !result_.converged) && structure_frames_.last_step() != state_.step)
+      add_frame(parts);
+    if (!stepped && result_.failure.empty()) result_.converged = true;  // resumed at its end: nothing to do
     result_.structure = state_.contact;  // the final state the penalised run measures
     if (interrupted_) result_.interrupted = true;
     complete_fluid();
@@ -74,11 +88,12 @@ class TimePenalisedFsi final : public PenalisedProblem {
     Json& j = r.summary;
     j["steps"] = state_.step;
     j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme}, {"structure_scheme", "newmark"},
-                 {"mass", c_.structure.mass}, {"steps", state_.step}, {"t", state_.t}, {"frames", frames_.size()},
+                 {"mass", c_.structure.mass}, {"steps", state_.step}, {"t", state_.t}, {"frames", structure_frames_.size()},
                  {"passes", passes_json()}};
     j["velocity"] = point_json(rows_.empty() ? initial_.velocity : rows_.back().velocity);
     j["energy"] = energy_json(initial_, rows_);
     j["contact_intervals"] = contact_intervals_json(initial_, rows_, time_.dt);
+    if (run_.resumed()) j["resumed"] = run_.resumed_json(c_.output.dir);
   }
 
  private:
@@ -111,6 +126,60 @@ class TimePenalisedFsi final : public PenalisedProblem {
     Eigen::VectorXd v0(2 * n);
     v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
     return v0;
+  }
+
+  // From rest (and structure.v0): step 0's state, row and frame.
+  void start(Parts& p) {
+    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
+    b_last_ = s_->b_applied;
+    fluid_last_ = Eigen::VectorXd::Zero(dofs());
+    initial_ = row(0, 0);
+    add_frame(p);
+  }
+
+  // From a checkpoint: the loop's parts take back what they carry from step to step.
+  void continue_from(Parts& p) {
+    p.stepper.restore(state_.step, restored_->v_n, restored_->v_nm1);
+    if (state_.step > 0) f_->stokes->start_from(restored_->v_n);  // Newton's next start
+    p.relaxation->restore(restored_->relaxation);
+    p.structure.begin();  // as the first window's run() does
+    restored_.reset();
+  }
+
+  void add_frame(const Parts& p) {
+    if (!c_.output.vtu || !run_.out()) return;
+    structure_frames_.add(*run_.out(), state_.step, state_.t,
+                          [&](const std::string& path) { write_structure_vtu(path, c_, *s_, state_.contact, true); });
+    fluid_frames_.add(*run_.out(), state_.step, state_.t, [&](const std::string& path) {
+      write_fluid_vtu(path, c_, *f_->mesh, p.stepper.state(), f_->stokes->chi());
+    });
+  }
+
+  void save(const Parts& p) const {
+    run_.write_checkpoint(state_.step, state_.t, [&](Checkpoint& k) {
+      put_newmark(k, state_);
+      k.put("b_last", b_last_), k.put("fluid_last", fluid_last_), k.put("work", work_);
+      put_fluid(k, "v_n", p.stepper.state());
+      put_fluid(k, "v_nm1", p.stepper.previous());
+      for (const auto& [name, values] : p.relaxation->saved()) k.put("relaxation." + name, values);
+      put_rows(k, initial_, rows_);
+      structure_frames_.save(k), fluid_frames_.save(k);
+    });
+  }
+  void restore(const Checkpoint& k) {
+    const long n = dofs();
+    const int nv = f_->mesh->num_vertices(), nt = f_->mesh->num_triangles();
+    state_ = get_newmark(k, n);
+    b_last_ = k.vector("b_last", n), fluid_last_ = k.vector("fluid_last", n), work_ = k.scalar("work");
+    restored_ = Restored{get_fluid(k, "v_n", nv, nt), get_fluid(k, "v_nm1", nv, nt), {}};
+    const std::string prefix = "relaxation.";
+    for (const auto& [name, values] : k.arrays())
+      if (name.rfind(prefix, 0) == 0) restored_->relaxation[name.substr(prefix.size())] = values;
+    if (!restored_->relaxation.count("projections") ||
+        (c_.coupling.scheme == "iqn-ils" && !restored_->relaxation.count("V")))
+      throw InputError(k.source + ": its relaxation's state is not coupling.scheme = \"" + c_.coupling.scheme + "\"'s");
+    get_rows(k, initial_, rows_);
+    structure_frames_.restore(k), fluid_frames_.restore(k);
   }
 
   // One time step; false (the run ends, the state at t^n kept) if its coupling failed
@@ -165,35 +234,18 @@ class TimePenalisedFsi final : public PenalisedProblem {
     return r;
   }
 
-  CoupledFrame frame(const Parts& p) const {
-    return {state_.t, state_.step, state_.contact, p.stepper.state(), f_->stokes->chi()};
-  }
-
   Json passes_json() const {
     int total = 0, most = 0;
     for (const StructureRow& r : rows_) total += r.passes, most = std::max(most, r.passes);
     return {{"total", total}, {"mean", rows_.empty() ? 0.0 : double(total) / double(rows_.size())}, {"max", most}};
   }
 
-  static std::string frame_name(const char* what, const CoupledFrame& f) {
-    char name[48];
-    std::snprintf(name, sizeof name, "%s-%06d.vtu", what, f.step);
-    return name;
-  }
-
   void write_structure(RunOutputs& out, bool fluid_vtu_written) override {
     write_coupled_files(out, c_, *s_, result_, fluid_ != nullptr, fluid_vtu_written, false, false);
     out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
     if (!c_.output.vtu) return;
-    std::vector<PvdEntry> structure, fluid;
-    for (const CoupledFrame& f : frames_) {
-      out.write(frame_name("structure", f), [&](const std::string& p) { write_structure_vtu(p, c_, *s_, f.structure, true); });
-      out.write(frame_name("fluid", f), [&](const std::string& p) { write_fluid_vtu(p, c_, *f_->mesh, f.fluid, f.chi); });
-      structure.push_back({frame_name("structure", f), 0, f.t});
-      fluid.push_back({frame_name("fluid", f), 0, f.t});
-    }
-    out.write("structure.pvd", [&](const std::string& p) { write_pvd(p, structure); });
-    out.write("fluid.pvd", [&](const std::string& p) { write_pvd(p, fluid); });
+    structure_frames_.write_collection(out);
+    fluid_frames_.write_collection(out);
   }
   const char* picture_name() const override { return "fsi.png"; }
   std::string picture_state() const override { return "t = " + shortest(state_.t) + " s, " + time_.scheme; }
@@ -224,8 +276,14 @@ class TimePenalisedFsi final : public PenalisedProblem {
   double work_ = 0;
   StructureRow initial_;
   std::vector<StructureRow> rows_;
-  std::vector<CoupledFrame> frames_;
+  FrameSeries structure_frames_{"structure"}, fluid_frames_{"fluid"};
   bool interrupted_ = false;
+  TimeRun run_;
+  struct Restored {
+    FluidSolution v_n, v_nm1;
+    Relaxation::State relaxation;
+  };
+  std::optional<Restored> restored_;  // a checkpoint's, until solve() gives it to the loop's parts
 };
 
 }  // namespace

@@ -14,13 +14,15 @@ namespace fsi {
 class TimeProgress {
  public:
   explicit TimeProgress(std::function<void(const std::string&)> progress) : progress_(std::move(progress)) {}
-  // After step k of `steps` (counted from this run's first), at simulated time t.
+  // A resumed run's first step is first + 1: its pace counts the steps it took.
+  void start_after(int first) { first_ = first; }
+  // After step k of `steps`, at simulated time t.
   void report(int k, int steps, double t) {
     if (!progress_) return;
     const double elapsed = clock_.elapsed();
     if (k < steps && elapsed - last_ < 2.0) return;
     last_ = elapsed;
-    const double rate = k / (elapsed > 1e-9 ? elapsed : 1e-9);
+    const double rate = (k - first_) / (elapsed > 1e-9 ? elapsed : 1e-9);
     char text[160];
     std::snprintf(text, sizeof text, "[time] step %d/%d, t = %.6g s, %.3g steps/s, about %.0f s left", k, steps, t,
                   rate, (steps - k) / rate);
@@ -31,6 +33,7 @@ class TimeProgress {
   std::function<void(const std::string&)> progress_;
   Stopwatch clock_;
   double last_ = 0;
+  int first_ = 0;
 };
 
 }  // namespace fsi

@@ -3,11 +3,13 @@
 // per step (ContactGap::solve: one QP, re-linearised QPs for contact.gap = "normal", or
 // Newton's QPs for a nonlinear material) warm-started from the last step's active set
 // and displacement. From rest at u = 0 with the uniform velocity structure.v0 (a free
-// body with structure.clamped = false). Outputs: history.csv (one line per step, and
-// the initial state), the frames structure-NNNNNN.vtu every time.output_every steps and
-// the last, listed with their times in structure.pvd, the last state's structure.vtu
-// and structure.png, and summary.json with the final state, the steps, the energy's
-// balance and the contact intervals.
+// body with structure.clamped = false), or from a checkpoint (--resume). Written as it
+// goes (run/time_run.hpp): the frames structure-NNNNNN.vtu every time.output_every
+// steps and the last, listed with their times in structure.pvd, and checkpoint.bin
+// every time.checkpoint_every steps and at the end (also when stopped). Then
+// history.csv (one line per step, and the initial state), the last state's
+// structure.vtu and structure.png, and summary.json with the final state, the steps,
+// the energy's balance and the contact intervals.
 #include <cmath>
 #include <cstdio>
 
@@ -22,23 +24,25 @@
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
 #include "run/structure_setup.hpp"
+#include "common/fault.hpp"
+#include "run/outputs/frame_series.hpp"
+#include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
+#include "run/time_run.hpp"
 #include "solid/newmark.hpp"
 
 namespace fsi {
 namespace {
 
-struct StructureFrame {
-  double t = 0;
-  int step = 0;
-  ContactSolution state;
-};
-
 class TimeStructureProblem final : public Problem {
  public:
   TimeStructureProblem(const Case& c, const RunOptions& options)
-      : c_(c), time_(*c.time), options_(options), progress_(options.progress) {}
+      : c_(c), time_(*c.time), options_(options), progress_(options.progress), run_(c, kind()) {}
   const char* kind() const override { return "contact"; }
+  bool streams() const override { return true; }
+  void open(RunOutputs& out) override { run_.open(out); }
+  void resume(Checkpoint k) override { run_.resume(std::move(k)); }
+  std::optional<int> resumed_frames_to() const override { return run_.resumed_frames_to(); }
 
   void set_up(PhaseTimes& times) override {
     Mesh mesh = in_phase(times, "mesh", [&] { return make_structure_mesh(c_); });
@@ -47,20 +51,16 @@ class TimeStructureProblem final : public Problem {
     // The QP's own lines would come at every step: the time's progress line speaks instead.
     s_ = make_structure(c_, std::move(mesh), nullptr);
     probes_ = std::make_unique<ProbeSet>(s_.mesh(), c_.output.probes, s_.p2());
+    if (const Checkpoint* k = run_.resumed()) restore(*k);  // checked before anything is written
   }
 
   void solve(PhaseTimes& times) override {
     ScopedPhase phase(times, "structure");
     newmark_ = std::make_unique<Newmark>(s_.mass, time_.dt, s_.solver->free_dofs());
-    const int n = s_.mesh().num_vertices() * 1;
-    Eigen::VectorXd v0(2 * n);
-    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
-    b_last_ = s_.b_applied;
-    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
-    initial_ = row(0);
-    frames_.push_back({0.0, 0, state_.contact});
+    if (!run_.resumed()) start();
     const int steps = time_.steps();
-    for (int k = 1; k <= steps && !interrupted_; ++k) {
+    progress_.start_after(state_.step);
+    for (int k = run_.first_step(); k <= steps; ++k) {
       if ((interrupted_ = interrupt_requested())) break;
       try {
         step();
@@ -69,11 +69,15 @@ class TimeStructureProblem final : public Problem {
         break;
       }
       rows_.push_back(row(last_iterations_));
-      if (k % time_.output_every == 0 || k == steps) frames_.push_back({state_.t, k, state_.contact});
+      if (run_.frame_due(k)) add_frame();
+      if (run_.checkpoint_due(k)) save();
+      fault_step(k);
       progress_.report(k, steps, state_.t);
     }
-    if ((failure_.size() || interrupted_) && frames_.back().step != state_.step)
-      frames_.push_back({state_.t, state_.step, state_.contact});  // what was computed
+    save();  // the run's end, also when stopped or failed: --resume continues from it
+    // What was computed, as a frame too (the checkpoint lists the regular frames only: a
+    // resumed run writes the series an uninterrupted run would have).
+    if ((interrupted_ || !failure_.empty()) && frames_.last_step() != state_.step) add_frame();
   }
 
   void measure(RunResult& r) override {
@@ -105,6 +109,7 @@ class TimeStructureProblem final : public Problem {
     j["velocity"] = point_json(rows_.empty() ? initial_.velocity : rows_.back().velocity);
     j["energy"] = energy_json(initial_, rows_);
     j["contact_intervals"] = contact_intervals_json(initial_, rows_, time_.dt);
+    if (run_.resumed()) j["resumed"] = run_.resumed_json(c_.output.dir);
     char text[320];
     std::snprintf(text, sizeof text,
                   "%s: the structure alone in time (Newmark, %s mass, dt = %s s): %d steps to t = %s s on %d "
@@ -119,13 +124,7 @@ class TimeStructureProblem final : public Problem {
   void write(RunOutputs& out) override {
     out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
     if (c_.output.vtu) {
-      for (const StructureFrame& f : frames_)
-        out.write(frame_name(f), [&](const std::string& p) { write_structure_vtu(p, c_, s_, f.state, false); });
-      out.write("structure.pvd", [&](const std::string& p) {
-        std::vector<PvdEntry> entries;
-        for (const StructureFrame& f : frames_) entries.push_back({frame_name(f), 0, f.t});
-        write_pvd(p, entries);
-      });
+      frames_.write_collection(out);
       out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
     }
     if (c_.output.png)
@@ -134,17 +133,44 @@ class TimeStructureProblem final : public Problem {
   }
 
  private:
-  static std::string frame_name(const StructureFrame& f) {
-    char name[40];
-    std::snprintf(name, sizeof name, "structure-%06d.vtu", f.step);
-    return name;
+  // At rest at u = 0 with the velocity structure.v0: step 0, its row and frame.
+  void start() {
+    const int n = s_.mesh().num_vertices();
+    Eigen::VectorXd v0(2 * n);
+    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
+    b_last_ = s_.b_applied;
+    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
+    initial_ = row(0);
+    add_frame();
+  }
+
+  void add_frame() {
+    if (!c_.output.vtu || !run_.out()) return;
+    frames_.add(*run_.out(), state_.step, state_.t,
+                [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
+  }
+
+  // Everything the next step reads, and what the outputs have gathered so far.
+  void save() const {
+    run_.write_checkpoint(state_.step, state_.t, [&](Checkpoint& k) {
+      put_newmark(k, state_);
+      k.put("b_last", b_last_), k.put("work", work_);
+      put_rows(k, initial_, rows_);
+      frames_.save(k);
+    });
+  }
+  void restore(const Checkpoint& k) {
+    const long dofs = 2L * s_.mesh().num_vertices();
+    state_ = get_newmark(k, dofs);
+    b_last_ = k.vector("b_last", dofs), work_ = k.scalar("work");
+    get_rows(k, initial_, rows_);
+    frames_.restore(k);
   }
 
   // One Newmark step: the contact problem for b_eff from the last state.
   void step() {
     const double t = (state_.step + 1) * time_.dt;
     const Eigen::VectorXd b = structure_load_varies(c_) ? structure_load(c_, s_.mesh(), s_.p2(), t) : s_.b_applied;
-    const int before = s_.gap->linearisations();
     ContactSolution next;
     try {
       next = s_.gap->solve(*s_.solver, newmark_->effective_load(state_, b), state_.u, &state_.contact);
@@ -153,7 +179,9 @@ class TimeStructureProblem final : public Problem {
     }
     if (!next.u.allFinite() || !next.qp.alpha.allFinite())
       throw SolverFailure("the step's contact problem returned a non-finite displacement or multiplier");
-    last_iterations_ = next.qp.iterations + next.newton.steps + (s_.gap->linearisations() - before);
+    // The last QP's iterations, and one more for each linearisation before it (ContactGap
+    // counts the last solve's: it was a difference of two solves' counts).
+    last_iterations_ = next.qp.iterations + next.newton.steps + (s_.gap->linearisations() - 1);
     // The applied load's work over the step, trapezoidal: exact for a load linear in t.
     work_ += 0.5 * (b_last_ + b).dot(next.u - state_.u);
     b_last_ = b;
@@ -178,9 +206,10 @@ class TimeStructureProblem final : public Problem {
   int last_iterations_ = 0;
   StructureRow initial_;
   std::vector<StructureRow> rows_;
-  std::vector<StructureFrame> frames_;
+  FrameSeries frames_{"structure"};
   std::string failure_;
   bool interrupted_ = false;
+  TimeRun run_;
 };
 
 }  // namespace

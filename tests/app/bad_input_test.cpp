@@ -207,6 +207,8 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"time_without_t_end", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\n", "--set structure.shape=none", {"case.toml: time.t_end", "required"}},
       {"time_dt_beyond_t_end", kValid + "[fluid]\nrho = 1\n[time]\ndt = 2\nt_end = 1\n", "--set structure.shape=none", {"time.dt = 2", "(0, time.t_end]"}},
       {"time_too_many_steps", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-9\nt_end = 1\n", "--set structure.shape=none", {"time.t_end", "steps is over the limit", "at most"}},
+      {"time_too_many_frames", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-6\nt_end = 0.5\n", "--set structure.shape=none", {"time.output_every", "frames, over the limit", "at least 6"}},
+      {"time_checkpoint_every_negative", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\ncheckpoint_every = -1\n", "--set structure.shape=none", {"time.checkpoint_every", "[0, 1000000000]"}},
       {"time_scheme_unknown", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\nscheme = \"bdf3\"\n", "--set structure.shape=none", {"time.scheme", "\"bdf1\", \"bdf2\""}},
       {"time_with_a_structure_without_its_density", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\n", "", {"case.toml: structure.rho", "required with [time]"}},
       {"time_with_a_fluid_without_its_density", kValid + "[fluid]\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.rho=1", {"fluid.rho", "required with [time]"}},

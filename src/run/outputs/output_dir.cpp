@@ -14,31 +14,41 @@ const std::vector<std::string>& output_file_names() {
                                                  "structure.vtu", "fsi.pvd",      "fsi.png",      "fluid.png",
                                                  "structure.png", "table.md",     "table.csv",
                                                  "convergence.csv", "convergence.md", "convergence.png",
-                                                 "fluid.pvd",    "fluid-wake.png"};
+                                                 "fluid.pvd",    "fluid-wake.png", "structure.pvd",
+                                                 "checkpoint.bin", "animation.gif"};
   return names;
 }
 
-namespace {
-
-// A time run's frame fluid-NNNNNN.vtu (run/time_fluid_problem.cpp), or its temporary.
-bool is_frame_output(const std::string& file) {
-  if (file.rfind("fluid-", 0) != 0 || file.size() < 16) return false;
-  for (std::size_t i = 6; i < 12; ++i)
-    if (file[i] < '0' || file[i] > '9') return false;
-  return file.compare(12, 4, ".vtu") == 0;
+int frame_step(const std::string& file) {
+  for (const char* prefix : {"fluid-", "structure-", "frame-"}) {
+    const std::size_t n = std::char_traits<char>::length(prefix);
+    if (file.rfind(prefix, 0) != 0 || file.size() != n + 10) continue;
+    int step = 0;
+    for (std::size_t i = n; i < n + 6; ++i) {
+      if (file[i] < '0' || file[i] > '9') return -1;
+      step = 10 * step + (file[i] - '0');
+    }
+    const std::string ext = file.substr(n + 6);
+    return ext == ".vtu" || ext == ".png" ? step : -1;
+  }
+  return -1;
 }
 
-}  // namespace
-
-void remove_stale_outputs(const std::string& dir, const std::string& keep) {
+void remove_stale_outputs(const std::string& dir, const std::string& keep, int keep_frames_to, bool keep_checkpoint) {
   namespace fs = std::filesystem;
   std::error_code ec;
   std::vector<fs::path> stale;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string file = it->path().filename().string();
-    bool is_stale = is_frame_output(file);
+    const int step = frame_step(file);
+    bool is_stale = step > keep_frames_to;
+    const std::size_t tmp = file.find(".tmp");
+    if (tmp != std::string::npos && frame_step(file.substr(0, tmp)) >= 0 && is_temporary_of(file, file.substr(0, tmp)))
+      is_stale = true;
     for (const std::string& name : output_file_names())
-      if ((file == name && name != keep) || is_temporary_of(file, name)) is_stale = true;
+      if ((file == name && name != keep && !(keep_checkpoint && name == "checkpoint.bin")) ||
+          is_temporary_of(file, name))
+        is_stale = true;
     if (is_stale) stale.push_back(it->path());
   }
   for (const auto& p : stale)
@@ -61,13 +71,13 @@ void remove_stale_subdirs(const std::string& dir, const std::string& prefix, con
   }
 }
 
-void RunOutputs::begin(Json header) {
+void RunOutputs::begin(Json header, std::optional<int> resumed_frames_to) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) throw OutputError(dir_, ec.value());
   header["status"] = "writing";
   write_json(path("summary.json"), header);  // first: the directory now says it is in flux
-  remove_stale_outputs(dir_, "summary.json");
+  remove_stale_outputs(dir_, "summary.json", resumed_frames_to.value_or(-1), resumed_frames_to.has_value());
 }
 
 bool RunOutputs::write(const std::string& name, const std::function<void(const std::string& path)>& writer) {

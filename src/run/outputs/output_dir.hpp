@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,14 @@ namespace fsi {
 const std::vector<std::string>& output_file_names();
 
 // Removes `dir`'s files named in output_file_names() but `keep`, a time run's frames
-// fluid-NNNNNN.vtu, and their
-// temporaries; nothing else (a user's own files stay).
-void remove_stale_outputs(const std::string& dir, const std::string& keep = "");
+// (fluid-NNNNNN.vtu, structure-NNNNNN.vtu, frame-NNNNNN.png) but those of steps up to
+// `keep_frames_to`, checkpoint.bin if `keep_checkpoint` (a resumed run's, which it
+// continues), and their temporaries;
+// nothing else (a user's own files stay).
+void remove_stale_outputs(const std::string& dir, const std::string& keep = "", int keep_frames_to = -1,
+                          bool keep_checkpoint = false);
+// The step of a time run's frame file name, −1 for any other name.
+int frame_step(const std::string& file_name);
 
 // Subdirectories of `dir` named `prefix`… (an earlier sweep's row-NN, an earlier
 // study's level-N) that are not in `keep`: their files of ours removed, then the
@@ -36,7 +42,9 @@ class RunOutputs {
 
   // Creates the directory, writes summary.json = header + {"status": "writing"} and
   // removes stale outputs. Throws OutputError (path and strerror) if it cannot.
-  void begin(Json header);
+  // A resumed time run (SPEC §12) keeps its checkpoint and its frames up to step
+  // `resumed_frames_to` (−1: none).
+  void begin(Json header, std::optional<int> resumed_frames_to = std::nullopt);
   // Writes output `name` through writer(path); an OutputError is recorded, not
   // thrown. False if it failed.
   bool write(const std::string& name, const std::function<void(const std::string& path)>& writer);
