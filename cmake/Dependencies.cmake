@@ -12,6 +12,9 @@ pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
 # muparser (libmuparser-dev): the case's expressions in x, y, t (common/expression.hpp).
 pkg_check_modules(MUPARSER REQUIRED IMPORTED_TARGET muparser)
 find_package(ZLIB REQUIRED)
+# giflib (libgif-dev): a time run's animation (io/gif.hpp). No pkg-config file on Debian 12.
+find_path(GIF_INCLUDE_DIR gif_lib.h REQUIRED)
+find_library(GIF_LIBRARY gif REQUIRED)
 # CGAL (libcgal-dev, header-only, with GMP and MPFR for its exact predicates): the
 # constrained Delaunay triangulation and refinement of the mesh generator. Its target
 # adds -frounding-math for g++, which its interval filters need (without it a

@@ -20,6 +20,7 @@ packages=(
   libcli11-dev           # command line
   libcairo2-dev          # PNG figures (drawn by Cairo)
   libpng-dev zlib1g-dev  # PNG encoding, compressed VTU arrays
+  libgif-dev             # a time run's animation (animation.gif)
   nlohmann-json3-dev     # summary.json
   libboost-dev           # Boost.Geometry R-tree (point location)
   libgtest-dev libbenchmark-dev

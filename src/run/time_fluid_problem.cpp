@@ -28,6 +28,7 @@
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
 #include "common/fault.hpp"
+#include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
@@ -150,21 +151,28 @@ class TimeFluidProblem final : public Problem {
       frames_.write_collection(out);
       out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
     }
-    if (c_.output.png && !rows_.empty())
-      out.write("fluid.png", [&](const std::string& p) {
-        write_fluid_png(p, c_, *f_.mesh, stepper_->state(), Mesh{}, {},
-                        c_.name + ": fluid velocity magnitude at t = " + shortest(stepper_->time()) + " s",
-                        "hF = " + shortest(c_.fluid->h) + ";  " + time_.scheme + ", dt = " + shortest(time_.dt));
-      });
+    if (c_.output.png && !rows_.empty()) {
+      out.write("fluid.png", [&](const std::string& p) { picture(p); });
+      write_animation(out, pictures_);
+    }
     write_case_toml(out, c_);
   }
 
  private:
   Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(f_.mesh->num_triangles()); }
+  // The frame's fields and its picture (the animation's).
   void add_frame() {
-    if (!c_.output.vtu || !run_.out()) return;
-    frames_.add(*run_.out(), stepper_->steps(), stepper_->time(),
-                [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
+    if (!run_.out()) return;
+    if (c_.output.vtu)
+      frames_.add(*run_.out(), stepper_->steps(), stepper_->time(),
+                  [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
+    if (c_.output.png)
+      pictures_.add(*run_.out(), stepper_->steps(), stepper_->time(), [&](const std::string& p) { picture(p); });
+  }
+  void picture(const std::string& path) const {
+    write_fluid_png(path, c_, *f_.mesh, stepper_->state(), Mesh{}, {},
+                    c_.name + ": fluid velocity magnitude at t = " + shortest(stepper_->time()) + " s",
+                    "hF = " + shortest(c_.fluid->h) + ";  " + time_.scheme + ", dt = " + shortest(time_.dt));
   }
 
   // The stepper's v^n and v^{n−1}, the rows (each a step's t, Newton's steps, the
@@ -181,7 +189,7 @@ class TimeFluidProblem final : public Problem {
         for (std::size_t o = 0; o < rows_[i].forces.size(); ++o) rows.block(3 + 2 * long(o), long(i), 2, 1) = rows_[i].forces[o];
       }
       k.put_matrix("rows", rows);
-      frames_.save(k);
+      frames_.save(k), pictures_.save(k);
     });
   }
   void restore(const Checkpoint& k) {
@@ -197,7 +205,7 @@ class TimeFluidProblem final : public Problem {
       for (long o = 0; o < obstacles; ++o) r.forces.emplace_back(rows(3 + 2 * o, i), rows(4 + 2 * o, i));
       rows_.push_back(r);
     }
-    frames_.restore(k);
+    frames_.restore(k), pictures_.restore(k);
   }
 
   // This step's row: the forces with the step's ρ∂v/∂t and f_F at its time.
@@ -261,7 +269,7 @@ class TimeFluidProblem final : public Problem {
   FluidSetup f_;
   std::unique_ptr<FluidTimeStepper> stepper_;
   std::vector<StepRow> rows_;
-  FrameSeries frames_{"fluid"};
+  FrameSeries frames_{"fluid"}, pictures_{"frame", ".png"};
   std::string failure_;
   bool interrupted_ = false;
   TimeProgress progress_;

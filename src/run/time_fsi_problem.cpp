@@ -33,6 +33,7 @@
 #include "run/penalised_problem.hpp"
 #include "run/problem_kinds.hpp"
 #include "common/fault.hpp"
+#include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
@@ -146,12 +147,24 @@ class TimePenalisedFsi final : public PenalisedProblem {
     restored_.reset();
   }
 
+  // The frame's fields and its picture (the animation's): |v| with the deformed structure.
   void add_frame(const Parts& p) {
-    if (!c_.output.vtu || !run_.out()) return;
-    structure_frames_.add(*run_.out(), state_.step, state_.t,
-                          [&](const std::string& path) { write_structure_vtu(path, c_, *s_, state_.contact, true); });
-    fluid_frames_.add(*run_.out(), state_.step, state_.t, [&](const std::string& path) {
-      write_fluid_vtu(path, c_, *f_->mesh, p.stepper.state(), f_->stokes->chi());
+    if (!run_.out()) return;
+    if (c_.output.vtu) {
+      structure_frames_.add(*run_.out(), state_.step, state_.t,
+                            [&](const std::string& path) { write_structure_vtu(path, c_, *s_, state_.contact, true); });
+      fluid_frames_.add(*run_.out(), state_.step, state_.t, [&](const std::string& path) {
+        write_fluid_vtu(path, c_, *f_->mesh, p.stepper.state(), f_->stokes->chi());
+      });
+    }
+    if (!c_.output.png) return;
+    const Eigen::VectorXd& u = state_.u;
+    const Mesh deformed = displaced(s_->mesh(), component(u, 0), component(u, 1));
+    pictures_.add(*run_.out(), state_.step, state_.t, [&](const std::string& path) {
+      write_fluid_png(path, c_, *f_->mesh, p.stepper.state(), deformed, active_vertices(*s_->solver, state_.contact),
+                      c_.name + ": fluid velocity magnitude at t = " + shortest(state_.t) + " s",
+                      "eps = " + shortest(c_.coupling.eps) + ", hF = " + shortest(c_.fluid->h) + ", hS = " +
+                          shortest(c_.structure.h) + ";  " + time_.scheme + " and Newmark, dt = " + shortest(time_.dt));
     });
   }
 
@@ -163,7 +176,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
       put_fluid(k, "v_nm1", p.stepper.previous());
       for (const auto& [name, values] : p.relaxation->saved()) k.put("relaxation." + name, values);
       put_rows(k, initial_, rows_);
-      structure_frames_.save(k), fluid_frames_.save(k);
+      structure_frames_.save(k), fluid_frames_.save(k), pictures_.save(k);
     });
   }
   void restore(const Checkpoint& k) {
@@ -179,7 +192,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
         (c_.coupling.scheme == "iqn-ils" && !restored_->relaxation.count("V")))
       throw InputError(k.source + ": its relaxation's state is not coupling.scheme = \"" + c_.coupling.scheme + "\"'s");
     get_rows(k, initial_, rows_);
-    structure_frames_.restore(k), fluid_frames_.restore(k);
+    structure_frames_.restore(k), fluid_frames_.restore(k), pictures_.restore(k);
   }
 
   // One time step; false (the run ends, the state at t^n kept) if its coupling failed
@@ -243,6 +256,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
   void write_structure(RunOutputs& out, bool fluid_vtu_written) override {
     write_coupled_files(out, c_, *s_, result_, fluid_ != nullptr, fluid_vtu_written, false, false);
     out.write("history.csv", [&](const std::string& p) { write_structure_history(p, initial_, rows_); });
+    if (c_.output.png) write_animation(out, pictures_);
     if (!c_.output.vtu) return;
     structure_frames_.write_collection(out);
     fluid_frames_.write_collection(out);
@@ -276,7 +290,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
   double work_ = 0;
   StructureRow initial_;
   std::vector<StructureRow> rows_;
-  FrameSeries structure_frames_{"structure"}, fluid_frames_{"fluid"};
+  FrameSeries structure_frames_{"structure"}, fluid_frames_{"fluid"}, pictures_{"frame", ".png"};
   bool interrupted_ = false;
   TimeRun run_;
   struct Restored {

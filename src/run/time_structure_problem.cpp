@@ -25,6 +25,7 @@
 #include "run/run_case.hpp"
 #include "run/structure_setup.hpp"
 #include "common/fault.hpp"
+#include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
@@ -127,8 +128,10 @@ class TimeStructureProblem final : public Problem {
       frames_.write_collection(out);
       out.write("structure.vtu", [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
     }
-    if (c_.output.png)
+    if (c_.output.png) {
       out.write("structure.png", [&](const std::string& p) { write_structure_png(p, c_, s_, state_.contact); });
+      write_animation(out, pictures_);
+    }
     write_case_toml(out, c_);
   }
 
@@ -144,10 +147,16 @@ class TimeStructureProblem final : public Problem {
     add_frame();
   }
 
+  // The frame's fields and its picture (the animation's).
   void add_frame() {
-    if (!c_.output.vtu || !run_.out()) return;
-    frames_.add(*run_.out(), state_.step, state_.t,
-                [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
+    if (!run_.out()) return;
+    if (c_.output.vtu)
+      frames_.add(*run_.out(), state_.step, state_.t,
+                  [&](const std::string& p) { write_structure_vtu(p, c_, s_, state_.contact, false); });
+    if (c_.output.png)
+      pictures_.add(*run_.out(), state_.step, state_.t, [&](const std::string& p) {
+        write_structure_png(p, c_, s_, state_.contact, c_.name + ": t = " + shortest(state_.t) + " s");
+      });
   }
 
   // Everything the next step reads, and what the outputs have gathered so far.
@@ -156,7 +165,7 @@ class TimeStructureProblem final : public Problem {
       put_newmark(k, state_);
       k.put("b_last", b_last_), k.put("work", work_);
       put_rows(k, initial_, rows_);
-      frames_.save(k);
+      frames_.save(k), pictures_.save(k);
     });
   }
   void restore(const Checkpoint& k) {
@@ -164,7 +173,7 @@ class TimeStructureProblem final : public Problem {
     state_ = get_newmark(k, dofs);
     b_last_ = k.vector("b_last", dofs), work_ = k.scalar("work");
     get_rows(k, initial_, rows_);
-    frames_.restore(k);
+    frames_.restore(k), pictures_.restore(k);
   }
 
   // One Newmark step: the contact problem for b_eff from the last state.
@@ -206,7 +215,7 @@ class TimeStructureProblem final : public Problem {
   int last_iterations_ = 0;
   StructureRow initial_;
   std::vector<StructureRow> rows_;
-  FrameSeries frames_{"structure"};
+  FrameSeries frames_{"structure"}, pictures_{"frame", ".png"};
   std::string failure_;
   bool interrupted_ = false;
   TimeRun run_;

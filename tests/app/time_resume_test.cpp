@@ -65,6 +65,8 @@ nlohmann::json run_stop_resume(const std::string& name, const std::string& args,
   const fs::path dir = testing::scratch_dir(name);
   const testing::CliRun whole = testing::run_cli(args + " -q --out a", dir);
   EXPECT_EQ(whole.status, 0) << whole.err;
+  EXPECT_TRUE(fs::exists(dir / "a/animation.gif"));  // compared with the rest below
+  EXPECT_TRUE(fs::exists(dir / "a/frame-000000.png"));
   const testing::CliRun stopped =
       testing::run_shell("FSICONTACT_FAULT=sigterm@" + std::to_string(stop) + " '" + FSICONTACT_BINARY + "' " + args +
                              " -q --out b",

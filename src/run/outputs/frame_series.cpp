@@ -9,8 +9,14 @@ namespace fsi {
 
 std::string FrameSeries::file_name(int step) const {
   char number[16];
-  std::snprintf(number, sizeof number, "-%06d.vtu", step);
-  return name_ + number;
+  std::snprintf(number, sizeof number, "-%06d", step);
+  return name_ + number + extension_;
+}
+
+std::vector<std::string> FrameSeries::file_names() const {
+  std::vector<std::string> names;
+  for (int step : steps_) names.push_back(file_name(step));
+  return names;
 }
 
 bool FrameSeries::add(RunOutputs& out, int step, double t, const std::function<void(const std::string&)>& write) {
@@ -20,6 +26,7 @@ bool FrameSeries::add(RunOutputs& out, int step, double t, const std::function<v
 }
 
 bool FrameSeries::write_collection(RunOutputs& out) const {
+  if (extension_ != ".vtu") return true;
   return out.write(name_ + ".pvd", [&](const std::string& path) {
     std::vector<PvdEntry> entries;
     for (std::size_t i = 0; i < steps_.size(); ++i) entries.push_back({file_name(steps_[i]), 0, times_[i]});

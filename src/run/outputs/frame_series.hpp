@@ -16,24 +16,28 @@ namespace fsi {
 
 class FrameSeries {
  public:
-  // "structure": structure-NNNNNN.vtu (N the step) listed in structure.pvd.
-  explicit FrameSeries(std::string name) : name_(std::move(name)) {}
+  // "structure": structure-NNNNNN.vtu (N the step) listed in structure.pvd; with
+  // extension ".png", pictures frame-NNNNNN.png (no collection: the animation's).
+  explicit FrameSeries(std::string name, std::string extension = ".vtu")
+      : name_(std::move(name)), extension_(std::move(extension)) {}
 
   // Writes step's frame through write(path), then the collection; a failed write is
   // recorded by `out` (the frame is then not listed). False if it failed.
   bool add(RunOutputs& out, int step, double t, const std::function<void(const std::string& path)>& write);
-  // NAME.pvd for the frames so far (a resumed run that writes no new frame needs it).
+  // NAME.pvd for the frames so far (a resumed run that writes no new frame needs it);
+  // nothing for pictures.
   bool write_collection(RunOutputs& out) const;
   bool empty() const { return steps_.empty(); }
   std::size_t size() const { return steps_.size(); }
   int last_step() const { return steps_.empty() ? -1 : steps_.back(); }
   std::string file_name(int step) const;
+  std::vector<std::string> file_names() const;
 
   void save(Checkpoint& k) const;
   void restore(const Checkpoint& k);
 
  private:
-  std::string name_;
+  std::string name_, extension_;
   std::vector<int> steps_;
   std::vector<double> times_;
 };

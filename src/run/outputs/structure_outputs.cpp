@@ -157,7 +157,7 @@ void draw_contact_zone(Figure& fig, const StructureSetup& s, const ContactSoluti
 }  // namespace
 
 void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
-                         const ContactSolution& solution) {
+                         const ContactSolution& solution, const std::string& title) {
   const Mesh& ref = s.mesh();
   const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
   const Mesh def = displaced(ref, u1, u2);
@@ -165,7 +165,8 @@ void write_structure_png(const std::string& path, const Case& c, const Structure
   const WorldBox box = structure_frame(c, ref, def);
   const int width = static_cast<int>(std::clamp(1100.0 * (box.x_max - box.x_min) / (box.y_max - box.y_min), 500.0, 1100.0));
   const bool several = c.obstacles_given && c.obstacles.size() != 1;
-  Figure fig(box, width, c.name + ": deformed structure in contact with the obstacle" + (several ? "s" : ""));
+  Figure fig(box, width,
+             title.empty() ? c.name + ": deformed structure in contact with the obstacle" + (several ? "s" : "") : title);
   structure_notes(fig, c, s, solution, magnitude.maxCoeff());
   for (const auto& outline : obstacle_outlines(c, box)) {
     if (outline.size() < 3) continue;

@@ -22,7 +22,8 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
 
 // The deformed structure coloured by |u| over the undeformed outline, the obstacle,
 // the contact zone in red, and a colour bar (the paper's Figs. 5–7).
+// `title` (empty: the default) names a time run's frame.
 void write_structure_png(const std::string& path, const Case& c, const StructureSetup& s,
-                         const ContactSolution& solution);
+                         const ContactSolution& solution, const std::string& title = "");
 
 }  // namespace fsi
