@@ -185,6 +185,9 @@ struct TimeParams {
   // time.checkpoint_every: steps between checkpoints (checkpoint.bin, --resume); 0: one
   // at the run's end only (also when it is stopped or fails: the last good state).
   int checkpoint_every = 0;
+  // time.start_from: "rest" (u = 0, u̇ = structure.v0, v = 0) | "steady" (the steady
+  // solution of the same case with its data at t = 0, u̇ = structure.v0, ü = 0).
+  std::string start_from = "rest";
   int steps() const { return static_cast<int>(std::llround(t_end / dt)); }
 };
 

@@ -342,6 +342,9 @@ void check_time(const Case& c, const Origin& origin) {
     fail(origin, "structure.clamped", "= false leaves a free body, which only inertia holds",
          "true, or false with a [time] section");
   if (!c.time) return;
+  if (c.time->start_from == "steady" && !c.structure.clamped)
+    fail(origin, "time.start_from", "= \"steady\" needs a steady problem, and a free body (structure.clamped = false) "
+         "has none", "\"rest\" for a free body");
   if (c.structure.shape != "none") return check_structure_in_time(c, origin);
   if (!c.fluid) return;  // nothing at all: check_no_structure says so
   if (c.fluid->method != "penalised")

@@ -71,11 +71,14 @@ class TimeFluidProblem final : public Problem {
     const Mesh& mesh = *f_.mesh;
     PenalisedStokes& fluid = *f_.stokes;
     fluid.set_chi(Eigen::VectorXd::Zero(mesh.num_triangles()));  // no structure
-    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, time_scheme(time_), time_.dt, fluid_at_rest(mesh));
     const auto data = [&](double t) {
       fluid.set_body_force(fluid_body_force(*c_.fluid, t));
       fluid.set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, t));
     };
+    // The steady flow for the data at t = 0 first (time.start_from = "steady"), before
+    // the stepper adds the time derivative to the operator.
+    const FluidSolution initial = time_.start_from == "steady" && !restored_ ? steady_flow(data) : fluid_at_rest(mesh);
+    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, time_scheme(time_), time_.dt, initial);
     if (restored_) {
       stepper_->restore(restored_->step, restored_->v_n, restored_->v_nm1);
       if (restored_->step > 0) fluid.start_from(restored_->v_n);  // Newton's next start
@@ -160,6 +163,17 @@ class TimeFluidProblem final : public Problem {
 
  private:
   Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(f_.mesh->num_triangles()); }
+  FluidSolution steady_flow(const std::function<void(double)>& data) {
+    data(0.0);
+    try {
+      FluidSolution v = f_.stokes->solve();
+      v.exact_on = nullptr;
+      return v;
+    } catch (const SolverFailure& e) {
+      throw SolverFailure(std::string("the steady flow at t = 0 (time.start_from = \"steady\"): ") + e.what());
+    }
+  }
+
   // The frame's fields and its picture (the animation's).
   void add_frame() {
     if (!run_.out()) return;

@@ -35,6 +35,7 @@
 #include "common/fault.hpp"
 #include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
+#include "run/steady_start.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
 #include "run/time_run.hpp"
@@ -57,10 +58,13 @@ class TimePenalisedFsi final : public PenalisedProblem {
   }
 
   void solve(PhaseTimes& times) override {
-    Parts parts(*this);
+    // The steady state first (time.start_from), before the stepper adds ρ∂v/∂t.
+    std::optional<SteadyCoupledStart> steady;
+    if (time_.start_from == "steady" && !restored_) steady = steady_coupled(c_, *s_, *f_, fluid_force());
+    Parts parts(*this, steady ? steady->fluid : fluid_at_rest(*f_->mesh));
     newmark_ = std::make_unique<Newmark>(s_->mass, time_.dt, s_->solver->free_dofs());
     if (restored_) continue_from(parts);
-    else start(parts);
+    else start(parts, steady ? &*steady : nullptr);
     const int steps = time_.steps();
     progress_.start_after(state_.step);
     bool stepped = false;
@@ -100,11 +104,11 @@ class TimePenalisedFsi final : public PenalisedProblem {
  private:
   // What the loop is made of, built once per run.
   struct Parts {
-    explicit Parts(TimePenalisedFsi& p)
+    Parts(TimePenalisedFsi& p, const FluidSolution& initial)
         : M(assemble_vector_mass(p.s_->mesh())),
           relaxation(make_relaxation(p.c_.coupling.scheme,
                                      {.omega0 = p.c_.coupling.omega, .reused_windows = p.c_.coupling.reuse}, M)),
-          stepper(*p.f_->stokes, p.c_.fluid->rho, time_scheme(p.time_), p.time_.dt, fluid_at_rest(*p.f_->mesh)),
+          stepper(*p.f_->stokes, p.c_.fluid->rho, time_scheme(p.time_), p.time_.dt, initial),
           penalty(std::make_shared<PenaltyVelocityLoad>(p.f_->mesh->num_triangles(), p.f_->stokes->eps())),
           fluid({p.s_->mesh(), *p.f_->stokes, stepper, *penalty, *p.f_->locator, *p.f_->chi}),
           structure(*p.s_->solver, p.s_->gap.get()),
@@ -129,11 +133,15 @@ class TimePenalisedFsi final : public PenalisedProblem {
     return v0;
   }
 
-  // From rest (and structure.v0): step 0's state, row and frame.
-  void start(Parts& p) {
-    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
+  // From rest, or the steady state (time.start_from), with structure.v0: step 0's
+  // state, row and frame.
+  void start(Parts& p, const SteadyCoupledStart* steady) {
+    if (steady)  // in equilibrium: no acceleration
+      state_ = newmark_->start(0.0, steady->structure.u, initial_velocity(), Eigen::VectorXd::Zero(dofs()), steady->structure);
+    else
+      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
     b_last_ = s_->b_applied;
-    fluid_last_ = Eigen::VectorXd::Zero(dofs());
+    fluid_last_ = steady ? steady->fluid_load : Eigen::VectorXd::Zero(dofs());
     initial_ = row(0, 0);
     add_frame(p);
   }

@@ -27,6 +27,7 @@
 #include "common/fault.hpp"
 #include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
+#include "run/steady_start.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
 #include "run/time_run.hpp"
@@ -136,13 +137,20 @@ class TimeStructureProblem final : public Problem {
   }
 
  private:
-  // At rest at u = 0 with the velocity structure.v0: step 0, its row and frame.
+  // At rest at u = 0 (or the steady state: time.start_from) with the velocity
+  // structure.v0: step 0, its row and frame.
   void start() {
     const int n = s_.mesh().num_vertices();
     Eigen::VectorXd v0(2 * n);
     v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
     b_last_ = s_.b_applied;
-    state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
+    if (time_.start_from == "steady") {
+      ContactSolution steady = steady_structure(c_);
+      const Eigen::VectorXd u0 = steady.u;  // in equilibrium: no acceleration
+      state_ = newmark_->start(0.0, u0, v0, Eigen::VectorXd::Zero(2 * n), std::move(steady));
+    } else {
+      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
+    }
     initial_ = row(0);
     add_frame();
   }

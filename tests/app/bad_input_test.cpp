@@ -209,6 +209,8 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"time_too_many_steps", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-9\nt_end = 1\n", "--set structure.shape=none", {"time.t_end", "steps is over the limit", "at most"}},
       {"time_too_many_frames", kValid + "[fluid]\nrho = 1\n[time]\ndt = 1e-6\nt_end = 0.5\n", "--set structure.shape=none", {"time.output_every", "frames, over the limit", "at least 6"}},
       {"time_checkpoint_every_negative", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\ncheckpoint_every = -1\n", "--set structure.shape=none", {"time.checkpoint_every", "[0, 1000000000]"}},
+      {"time_start_from_unknown", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\nstart_from = \"moving\"\n", "--set structure.shape=none", {"time.start_from", "\"rest\", \"steady\""}},
+      {"time_steady_free_body", kValid + "[time]\ndt = 0.1\nt_end = 1\nstart_from = \"steady\"\n", "--set structure.rho=1 --set structure.clamped=false", {"time.start_from", "free body"}},
       {"time_scheme_unknown", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\nscheme = \"bdf3\"\n", "--set structure.shape=none", {"time.scheme", "\"bdf1\", \"bdf2\""}},
       {"time_with_a_structure_without_its_density", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\n", "", {"case.toml: structure.rho", "required with [time]"}},
       {"time_with_a_fluid_without_its_density", kValid + "[fluid]\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.rho=1", {"fluid.rho", "required with [time]"}},

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli.hpp"
+#include "support/history.hpp"
 
 namespace fsi::structure_time_run_test {
 namespace {
@@ -20,29 +21,8 @@ const std::string kBar = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/bar-
 // The bar's exact answer (the case's numbers): L = 1, H = 0.1, c = sqrt(E/ρ) = 10, v0 = 0.1.
 constexpr double kL = 1.0, kH = 0.1, kC = 10.0, kV0 = 0.1, kRho = 1.0;
 
-struct History {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::size_t column(const std::string& name) const {
-    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
-  }
-};
-
-History read_history(const fs::path& file) {
-  History h;
-  std::istringstream in(testing::slurp(file));
-  std::string line;
-  std::getline(in, line);
-  std::istringstream header(line);
-  for (std::string cell; std::getline(header, cell, ',');) h.columns.push_back(cell);
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    std::vector<double> cells;
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::stod(cell));
-    h.rows.push_back(cells);
-  }
-  return h;
-}
+using testing::History;
+using testing::read_history;
 
 // h = 0.01, Δt = 5e-4 (c Δt / h = 0.5), to t = 0.32 (the bar leaves at 0.30): 640 steps,
 // about 1 s (15 s under the sanitizers before it stopped at 0.32 instead of 0.45).

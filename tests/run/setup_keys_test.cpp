@@ -58,6 +58,7 @@ std::string other_value(const std::string& key) {
                                                              {"time.scheme", "bdf2"},
                                                              {"time.output_every", "2"},
                                                              {"time.checkpoint_every", "2"},
+                                                             {"time.start_from", "steady"},
                                                              {"structure.rho", "1000"},
                                                              {"structure.v0", "[0.1, 0]"},
                                                              {"structure.mass", "consistent"},

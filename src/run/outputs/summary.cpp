@@ -102,7 +102,8 @@ Json to_json(const Case& c) {
   j["output"] = to_json(c.output);
   if (c.time)
     j["time"] = {{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
-                 {"output_every", c.time->output_every}, {"checkpoint_every", c.time->checkpoint_every}};
+                 {"output_every", c.time->output_every}, {"checkpoint_every", c.time->checkpoint_every},
+                 {"start_from", c.time->start_from}};
   return j;
 }
 
