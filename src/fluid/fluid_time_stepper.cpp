@@ -35,10 +35,21 @@ const FluidSolution& FluidTimeStepper::step(const std::function<void(double)>& d
   return *v_n_;
 }
 
+// The convecting velocity of a semi-implicit step: 2vⁿ − vⁿ⁻¹ (second order, with
+// BDF2), or vⁿ.
+FluidSolution FluidTimeStepper::extrapolated(bool second_order) const {
+  if (!second_order) return *v_n_;
+  FluidSolution w;
+  w.v1 = 2 * v_n_->v1 - v_nm1_->v1, w.v2 = 2 * v_n_->v2 - v_nm1_->v2;
+  w.p = 2 * v_n_->p - v_nm1_->p, w.bubble = 2 * v_n_->bubble - v_nm1_->bubble;
+  return w;
+}
+
 void FluidTimeStepper::begin(const std::function<void(double)>& data) {
   if (data) data(time() + dt_);
   const BdfWeights w = bdf_weights(scheme_, steps_);
   derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
+  fluid_.linearise_about(extrapolated(w.beta2 != 0));
   fluid_.terms_changed();
   solved_ = false;
 }

@@ -53,6 +53,8 @@ class FluidTimeStepper {
   const FluidTimeDerivative* last_step_inertia() const { return stepped_ ? derivative_.get() : nullptr; }
 
  private:
+  FluidSolution extrapolated(bool second_order) const;
+
   PenalisedStokes& fluid_;
   TimeScheme scheme_;
   double dt_, t0_;

@@ -114,7 +114,13 @@ NewtonSolve::Residual NewtonSolve::step(const Eigen::VectorXd& chi, double eps, 
   return residual(chi, eps);
 }
 
+void NewtonSolve::linearise_about(const FluidSolution& w) {
+  about_ = w;
+  about_->exact_on = nullptr;
+}
+
 void NewtonSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
+  if (options_.semi_implicit && about_) return solve_oseen(chi, eps, sampled);
   if (!started_) set_zero(w_);  // the first step is the Stokes solution
   report_.residuals.clear();
   report_.steps = report_.picard_steps = report_.rejected = report_.damped = 0;
@@ -130,6 +136,22 @@ void NewtonSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles
   started_ = true;
   ++report_.solves;
   report_.max_final_residual = std::max(report_.max_final_residual, report_.residuals.back());
+}
+
+// time.convection = "semi-implicit": ρ(w·∇)v with w the step's extrapolated velocity,
+// one linear solve (the convection's Picard form, NewtonConvection::set_picard).
+void NewtonSolve::solve_oseen(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
+  w_ = *about_;
+  convection_->set_picard(true);
+  assembler_.forget_assembly();
+  whole_.solve(chi, eps, sampled);
+  convection_->set_picard(false);
+  w_ = out_;
+  started_ = true;
+  report_.residuals.clear();
+  report_.steps = report_.rejected = report_.damped = 0;
+  report_.picard_steps = 1;
+  ++report_.total_picard_steps, ++report_.solves;
 }
 
 void NewtonSolve::fail() const {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct NewtonOptions {
   double rho = 1;          // ρ_F
   double tol = 1e-10;      // relative residual to reach (fluid.newton_tol)
   int max_steps = 30;      // Newton's and Picard's steps per solve (fluid.newton_max_steps)
+  // A time step's convection semi-implicit (time.convection): each solve is one Oseen
+  // (Picard) solve about the velocity given by linearise_about(), not Newton's iteration.
+  bool semi_implicit = false;
 };
 
 // What the Newton iterations did: the last solve's residual history and the run's totals.
@@ -59,6 +63,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   void new_run() override;
   void load_changed() override { scale_ = 0; }
   void start_from(const FluidSolution& last) override;
+  void linearise_about(const FluidSolution& w) override;
   const FluidNewtonReport& report() const { return report_; }
   const NewtonOptions& options() const { return options_; }
 
@@ -70,6 +75,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   Residual residual(const Eigen::VectorXd& chi, double eps, bool at_rest = false);
   double scale(const Eigen::VectorXd& chi, double eps);
   Residual step(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled, const Residual& r);
+  void solve_oseen(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled);
   [[noreturn]] void fail() const;
 
   StokesAssembler& assembler_;
@@ -80,6 +86,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   FluidSolution w_;  // the iterate the convection term is linearised about
   std::shared_ptr<NewtonConvection> convection_;
   bool started_ = false;  // w_ holds a solution of this run
+  std::optional<FluidSolution> about_;  // semi-implicit: the convecting velocity of the step
   double scale_ = 0;      // ‖b(0)‖, 0 while unknown
   FluidNewtonReport report_;
 };

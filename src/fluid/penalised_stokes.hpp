@@ -92,6 +92,8 @@ class PenalisedStokes {
   // A resumed time run: the next solve starts where the interrupted run's would have
   // (StokesSolveStrategy::start_from: Newton's iterate, `last`).
   void start_from(const FluidSolution& last) { strategy_->start_from(last); }
+  // The step's convecting velocity for semi-implicit convection (a no-op otherwise).
+  void linearise_about(const FluidSolution& w) { strategy_->linearise_about(w); }
 
   // Solves for the current problem; if nothing of it (χ, ε, the load) changed since
   // the last solve, returns the previous solution without refactorising. The fields

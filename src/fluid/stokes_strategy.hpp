@@ -59,6 +59,8 @@ class StokesSolveStrategy {
   // run's last solve ended with, which its next solve would have started from
   // (Newton's iterate), so that the resumed run takes the same steps to the same bits.
   virtual void start_from(const FluidSolution& /*last*/) {}
+  // A time step's convecting velocity (semi-implicit convection: NewtonOptions).
+  virtual void linearise_about(const FluidSolution& /*w*/) {}
   virtual std::string name() const = 0;
   // Whether it factors symmetric systems only (PenalisedStokes::solve refuses an
   // unsymmetric K then, naming it).

@@ -294,6 +294,7 @@ void read_time(const toml::table& root, const Origin& origin, Case& c, std::vect
   p.output_every = s.integer("output_every", p.output_every, 1, 1000000000);
   p.checkpoint_every = s.integer("checkpoint_every", p.checkpoint_every, 0, 1000000000);
   p.start_from = s.choice("start_from", p.start_from, {"rest", "steady"});
+  p.convection = s.choice("convection", p.convection, {"implicit", "semi-implicit"});
   s.reject_unknown();
   if (known) return;
   for (const char* key : {"dt", "t_end"})
@@ -520,7 +521,8 @@ std::string to_toml(const Case& c) {
     t.insert("time", toml::table{{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
                                  {"output_every", c.time->output_every},
                                  {"checkpoint_every", c.time->checkpoint_every},
-                                 {"start_from", c.time->start_from}});
+                                 {"start_from", c.time->start_from},
+                                 {"convection", c.time->convection}});
   std::ostringstream out;
   out << t << "\n";
   return out.str();

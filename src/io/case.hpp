@@ -188,6 +188,10 @@ struct TimeParams {
   // time.start_from: "rest" (u = 0, u̇ = structure.v0, v = 0) | "steady" (the steady
   // solution of the same case with its data at t = 0, u̇ = structure.v0, ü = 0).
   std::string start_from = "rest";
+  // time.convection (Navier–Stokes): "implicit" (Newton's method in every step, to
+  // fluid.newton_tol) | "semi-implicit" (one Oseen solve a step, the convecting velocity
+  // extrapolated from the last steps: 2vⁿ − vⁿ⁻¹ with BDF2, vⁿ with BDF1).
+  std::string convection = "implicit";
   int steps() const { return static_cast<int>(std::llround(t_end / dt)); }
 };
 

@@ -110,15 +110,15 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   s.stokes = std::make_unique<PenalisedStokes>(
       *s.mesh, f.mu, eps, fluid_body_force(f), box_boundary_conditions(*s.mesh, f),
       f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
-  set_fluid_model(*s.stokes, f);
+  set_fluid_model(*s.stokes, f, c.time && c.time->convection == "semi-implicit");
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
   return s;
 }
 
-void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f) {
+void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f, bool semi_implicit) {
   if (f.viscous_form == "gradient") stokes.set_viscous_form(ViscousForm::gradient);
-  if (f.navier_stokes()) stokes.set_navier_stokes({f.rho, f.newton_tol, f.newton_max_steps});
+  if (f.navier_stokes()) stokes.set_navier_stokes({f.rho, f.newton_tol, f.newton_max_steps, semi_implicit});
 }
 
 MomentumModel momentum_model(const FluidParams& f) {

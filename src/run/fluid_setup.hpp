@@ -52,7 +52,8 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps);
 // fluid.viscous_form and fluid.model (SPEC §10) on a solver made with the whole
 // factorisation and kNavierStokesSolver for Navier–Stokes; and the same operator for
 // the residual forces.
-void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f);
+// `semi_implicit`: time.convection = "semi-implicit" (a time run's).
+void set_fluid_model(PenalisedStokes& stokes, const FluidParams& f, bool semi_implicit = false);
 MomentumModel momentum_model(const FluidParams& f);
 // time.scheme (SPEC §12) as the fluid's BDF.
 inline TimeScheme time_scheme(const TimeParams& p) { return p.scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::bdf1; }

@@ -238,6 +238,62 @@ TEST(FluidTimeStepper, AnUnsteadyNavierStokesFlowReachesTheSteadySolution) {
   EXPECT_LT(gap[59], 1e-3 * gap[19]);  // it decays, not merely stays small
 }
 
+// time.convection = "semi-implicit": one Oseen solve a step about 2vⁿ − vⁿ⁻¹. On the
+// same Navier–Stokes flow from rest, (a) it keeps the steady solution's fixed point
+// (at a steady state the extrapolation is the state: Oseen's equation is the steady
+// one), and (b) it differs from the implicit steps by the extrapolation's O(Δt²).
+struct ManufacturedNs {
+  static constexpr double pi = std::numbers::pi, mu = 0.05, rho = 1.0;
+  Mesh mesh = testing::structured_rectangle(1.0, 1.0, 10, 10);
+  static Point v_exact(const Point& x) {
+    return Point(std::sin(pi * x.x()) * std::cos(pi * x.y()), -std::cos(pi * x.x()) * std::sin(pi * x.y()));
+  }
+  static Point force(const Point& x) {
+    const Point convection(pi * std::sin(pi * x.x()) * std::cos(pi * x.x()), pi * std::sin(pi * x.y()) * std::cos(pi * x.y()));
+    return Point(2 * pi * pi * mu * v_exact(x) + rho * convection);
+  }
+  std::unique_ptr<PenalisedStokes> fluid(bool semi_implicit) const {
+    FluidBoundaryConditions bc;
+    for (const char* side : {"left", "right", "top"}) bc.dirichlet_labels.push_back(mesh.label(side));
+    bc.g = v_exact;
+    auto f = std::make_unique<PenalisedStokes>(mesh, mu, 1.0, force, bc, kNavierStokesSolver, FluidFactorization::whole);
+    f->set_viscous_form(ViscousForm::gradient);
+    f->set_navier_stokes({rho, 1e-12, 30, semi_implicit});
+    return f;
+  }
+  // The state after `steps` BDF2 steps of dt from rest.
+  FluidSolution march(bool semi_implicit, double dt, int steps) const {
+    auto f = fluid(semi_implicit);
+    FluidTimeStepper stepper(*f, rho, TimeScheme::bdf2, dt, fluid_at_rest(mesh));
+    for (int k = 0; k < steps; ++k) stepper.step();
+    if (semi_implicit) EXPECT_EQ(f->newton()->total_steps, 0);  // one Oseen solve a step, no Newton step
+    return stepper.state();
+  }
+};
+
+double max_difference(const FluidSolution& a, const FluidSolution& b) {
+  return std::max((a.v1 - b.v1).cwiseAbs().maxCoeff(), (a.v2 - b.v2).cwiseAbs().maxCoeff());
+}
+
+TEST(FluidTimeStepper, SemiImplicitConvectionKeepsTheSteadyFixedPoint) {
+  const ManufacturedNs ns;
+  const FluidSolution target = ns.fluid(false)->solve();
+  const FluidSolution v = ns.march(true, 0.5, 60);
+  EXPECT_LT(max_difference(v, target), 1e-9);
+}
+
+TEST(FluidTimeStepper, SemiImplicitConvectionDiffersFromImplicitByDtSquared) {
+  const ManufacturedNs ns;
+  std::vector<double> d;
+  for (int steps : {10, 20, 40, 80})
+    d.push_back(max_difference(ns.march(true, 1.0 / steps, steps), ns.march(false, 1.0 / steps, steps)));
+  std::printf("semi-implicit - implicit at t = 1, dt = 1/10 ... 1/80: %.2e %.2e %.2e %.2e\n", d[0], d[1], d[2], d[3]);
+  for (std::size_t k = 0; k + 1 < d.size(); ++k) {
+    EXPECT_GT(std::log2(d[k] / d[k + 1]), 1.8) << k;
+    EXPECT_LT(std::log2(d[k] / d[k + 1]), 2.4) << k;
+  }
+}
+
 TEST(FluidTimeStepper, RefusesANonPositiveStepAndNewLabels) {
   const Mesh mesh = testing::structured_rectangle(1.0, 1.0, 2, 2);
   FluidBoundaryConditions bc;

@@ -59,6 +59,7 @@ std::string other_value(const std::string& key) {
                                                              {"time.output_every", "2"},
                                                              {"time.checkpoint_every", "2"},
                                                              {"time.start_from", "steady"},
+                                                             {"time.convection", "semi-implicit"},
                                                              {"structure.rho", "1000"},
                                                              {"structure.v0", "[0.1, 0]"},
                                                              {"structure.mass", "consistent"},

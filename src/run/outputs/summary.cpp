@@ -103,7 +103,7 @@ Json to_json(const Case& c) {
   if (c.time)
     j["time"] = {{"dt", c.time->dt}, {"t_end", c.time->t_end}, {"scheme", c.time->scheme},
                  {"output_every", c.time->output_every}, {"checkpoint_every", c.time->checkpoint_every},
-                 {"start_from", c.time->start_from}};
+                 {"start_from", c.time->start_from}, {"convection", c.time->convection}};
   return j;
 }
 
