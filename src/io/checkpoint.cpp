@@ -108,7 +108,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   for (const std::string& name : c.order) {
     const Eigen::VectorXd& v = c.arrays().at(name);
     header << name << " " << v.size() << "\n";
-    data.append(reinterpret_cast<const char*>(v.data()), sizeof(double) * static_cast<std::size_t>(v.size()));
+    if (v.size() > 0) data.append(reinterpret_cast<const char*>(v.data()), sizeof(double) * static_cast<std::size_t>(v.size()));
   }
   const std::uint64_t sum = fnv1a(data.data(), data.size());
   header << "data\n";
@@ -155,7 +155,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     std::size_t at = data_at;
     for (const auto& [name, n] : sizes) {
       Eigen::VectorXd v(n);
-      std::memcpy(v.data(), bytes.data() + at, sizeof(double) * static_cast<std::size_t>(n));
+      // An empty Eigen vector's data() is null, which memcpy may not take even for 0 bytes.
+      if (n > 0) std::memcpy(v.data(), bytes.data() + at, sizeof(double) * static_cast<std::size_t>(n));
       at += sizeof(double) * static_cast<std::size_t>(n);
       c.put(name, v);
     }
