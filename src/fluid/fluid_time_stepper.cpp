@@ -49,7 +49,7 @@ void FluidTimeStepper::begin(const std::function<void(double)>& data) {
   if (data) data(time() + dt_);
   const BdfWeights w = bdf_weights(scheme_, steps_);
   derivative_->set_step(dt_, w, *v_n_, w.beta2 != 0 ? v_nm1_.get() : nullptr);
-  fluid_.linearise_about(extrapolated(w.beta2 != 0));
+  if (fluid_.semi_implicit()) fluid_.linearise_about(extrapolated(w.beta2 != 0));
   fluid_.terms_changed();
   solved_ = false;
 }

@@ -114,8 +114,8 @@ NewtonSolve::Residual NewtonSolve::step(const Eigen::VectorXd& chi, double eps, 
   return residual(chi, eps);
 }
 
-void NewtonSolve::linearise_about(const FluidSolution& w) {
-  about_ = w;
+void NewtonSolve::linearise_about(FluidSolution w) {
+  about_ = std::move(w);
   about_->exact_on = nullptr;
 }
 

@@ -63,7 +63,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   void new_run() override;
   void load_changed() override { scale_ = 0; }
   void start_from(const FluidSolution& last) override;
-  void linearise_about(const FluidSolution& w) override;
+  void linearise_about(FluidSolution w) override;
   const FluidNewtonReport& report() const { return report_; }
   const NewtonOptions& options() const { return options_; }
 

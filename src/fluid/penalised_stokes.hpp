@@ -92,8 +92,10 @@ class PenalisedStokes {
   // A resumed time run: the next solve starts where the interrupted run's would have
   // (StokesSolveStrategy::start_from: Newton's iterate, `last`).
   void start_from(const FluidSolution& last) { strategy_->start_from(last); }
-  // The step's convecting velocity for semi-implicit convection (a no-op otherwise).
-  void linearise_about(const FluidSolution& w) { strategy_->linearise_about(w); }
+  // Semi-implicit convection (NewtonOptions::semi_implicit): each solve is one Oseen
+  // solve about the step's convecting velocity, given by linearise_about().
+  bool semi_implicit() const { return newton_ && newton_->options().semi_implicit; }
+  void linearise_about(FluidSolution w) { strategy_->linearise_about(std::move(w)); }
 
   // Solves for the current problem; if nothing of it (χ, ε, the load) changed since
   // the last solve, returns the previous solution without refactorising. The fields

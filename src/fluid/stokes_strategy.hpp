@@ -60,7 +60,7 @@ class StokesSolveStrategy {
   // (Newton's iterate), so that the resumed run takes the same steps to the same bits.
   virtual void start_from(const FluidSolution& /*last*/) {}
   // A time step's convecting velocity (semi-implicit convection: NewtonOptions).
-  virtual void linearise_about(const FluidSolution& /*w*/) {}
+  virtual void linearise_about(FluidSolution /*w*/) {}
   virtual std::string name() const = 0;
   // Whether it factors symmetric systems only (PenalisedStokes::solve refuses an
   // unsymmetric K then, naming it).

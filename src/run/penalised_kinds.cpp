@@ -10,6 +10,7 @@
 #include "fem/probes.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/region_hint.hpp"
+#include "run/steady_start.hpp"
 
 namespace fsi {
 namespace {
@@ -34,24 +35,17 @@ class PenalisedFsi final : public PenalisedProblem {
  private:
   CouplingResult couple() {
     const Mesh& ref = s_->mesh();
-    const FluidForce force = fluid_force();
-    const SparseMatrix M = assemble_vector_mass(ref);  // L²(Ω_S0): the stop's and the relaxation's
-    auto relaxation = make_relaxation(c_.coupling.scheme, {.omega0 = c_.coupling.omega}, M);
-    PenalisedStep fluid({ref, *f_->stokes, *f_->locator, *f_->chi, force});
     StructureStep structure(*s_->solver, s_->gap.get());
-    FixedPointCoupling loop(fluid, structure, s_->b_applied, *relaxation, M, c_.coupling.tol,
-                            c_.coupling.max_iterations);
-    loop.progress = [this](const std::string& line) {
-      if (options_.progress) options_.progress(line);
-    };
     const ProbeSet probes(ref, c_.output.probes, s_->p2());
-    loop.observe = probe_observer(probes);  // history.csv's u_x_i, u_y_i
-    if (options_.initial_displacement) {
-      loop.initial = *options_.initial_displacement;
-      f_->stokes->continue_last_run();  // the kept near region may serve the start's χ
-    }
+    if (options_.initial_displacement) f_->stokes->continue_last_run();  // the kept near region may serve the start's χ
     expect_structure_under_loads(*s_, *f_);
-    return loop.run();
+    return couple_steady(c_, ref, *f_, fluid_force(), structure, s_->b_applied, [&](FixedPointCoupling& loop) {
+      loop.progress = [this](const std::string& line) {
+        if (options_.progress) options_.progress(line);
+      };
+      loop.observe = probe_observer(probes);  // history.csv's u_x_i, u_y_i
+      if (options_.initial_displacement) loop.initial = *options_.initial_displacement;
+    });
   }
 
   void measure_structure(RunMeasures& m) override { measure_coupled_structure(m); }

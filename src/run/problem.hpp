@@ -53,7 +53,8 @@ class Problem {
   virtual bool streams() const { return false; }
   virtual void open(RunOutputs& /*out*/) {}
   // --resume: continue from `k`, a checkpoint of this case and kind
-  // (run/time_checkpoint.hpp); before set_up(). A steady kind refuses (InputError).
+  // (run/time_checkpoint.hpp); before set_up(). Only time kinds override it: run_case
+  // refuses --resume without [time] first.
   virtual void resume(Checkpoint k);
   // A resumed run keeps its checkpoint and its frame files up to this step (−1: none
   // listed); nullopt: not resumed.

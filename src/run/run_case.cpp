@@ -107,8 +107,10 @@ RunResult run(Problem& problem, const Case& c) {
   }
 }
 
+// Only time kinds resume, and run_case refuses --resume for a case without [time]
+// before it reaches here (an InputError naming the case).
 void Problem::resume(Checkpoint k) {
-  throw InputError(k.source + ": --resume continues a time run, and this case has no [time] section");
+  throw std::logic_error(k.source + ": a steady kind of run was asked to resume");
 }
 
 RunResult run_case(const Case& c, const RunOptions& options) {

@@ -1,7 +1,6 @@
 #include "run/steady_start.hpp"
 
 #include "common/errors.hpp"
-#include "coupling/fixed_point.hpp"
 #include "coupling/penalised_step.hpp"
 #include "fem/vector_p1.hpp"
 
@@ -31,14 +30,21 @@ ContactSolution steady_structure(const Case& c) {
   }
 }
 
+CouplingResult couple_steady(const Case& c, const Mesh& structure_mesh, FluidSetup& f, const FluidForce& force,
+                             StructureStep& structure, const Eigen::VectorXd& b,
+                             const std::function<void(FixedPointCoupling&)>& configure) {
+  const SparseMatrix M = assemble_vector_mass(structure_mesh);  // L²(Ω_S0): the stop's and the relaxation's
+  auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, M);
+  PenalisedStep fluid({structure_mesh, *f.stokes, *f.locator, *f.chi, force});
+  FixedPointCoupling loop(fluid, structure, b, *relaxation, M, c.coupling.tol, c.coupling.max_iterations);
+  if (configure) configure(loop);
+  return loop.run();
+}
+
 SteadyCoupledStart steady_coupled(const Case& c, const StructureSetup& s, FluidSetup& f, const FluidForce& force) {
   StructureSetup steady = steady_setup(c);
-  const SparseMatrix M = assemble_vector_mass(s.mesh());
-  auto relaxation = make_relaxation(c.coupling.scheme, {.omega0 = c.coupling.omega}, M);
-  PenalisedStep fluid({s.mesh(), *f.stokes, *f.locator, *f.chi, force});
   StructureStep structure(*steady.solver, steady.gap.get());
-  FixedPointCoupling loop(fluid, structure, steady.b_applied, *relaxation, M, c.coupling.tol, c.coupling.max_iterations);
-  CouplingResult r = loop.run();
+  CouplingResult r = couple_steady(c, s.mesh(), f, force, structure, steady.b_applied);
   if (!r.failure.empty()) throw SolverFailure(kWhat + r.failure);
   if (!r.converged)
     throw SolverFailure(std::string(kWhat) + "the coupling did not converge in coupling.max_iterations = " +

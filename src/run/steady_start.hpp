@@ -6,6 +6,9 @@
 // solves it. Its acceleration is zero: it is in equilibrium.
 #pragma once
 
+#include <functional>
+
+#include "coupling/fixed_point.hpp"
 #include "coupling/force_transfer.hpp"
 #include "io/case.hpp"
 #include "run/fluid_setup.hpp"
@@ -15,6 +18,14 @@ namespace fsi {
 
 // The contact problem for the applied load at t = 0. SolverFailure names the start.
 ContactSolution steady_structure(const Case& c);
+
+// The steady coupled problem of §5 on the structure's reference mesh `structure_mesh`:
+// the fixed point of `c`'s relaxation over the penalised fluid step (eq. 33's `force`)
+// and `structure`, for the applied load `b`. `configure` sets the loop's progress,
+// observer or start before it runs. What the steady kind solves, and a steady start.
+CouplingResult couple_steady(const Case& c, const Mesh& structure_mesh, FluidSetup& f, const FluidForce& force,
+                             StructureStep& structure, const Eigen::VectorXd& b,
+                             const std::function<void(FixedPointCoupling&)>& configure = {});
 
 struct SteadyCoupledStart {
   ContactSolution structure;

@@ -96,6 +96,13 @@ Eigen::VectorXd structure_load(const Case& c, const Mesh& mesh, const P2Space* p
   return applied_load(c, mesh, p2, t);
 }
 
+Eigen::VectorXd initial_velocity(const Case& c, const Mesh& mesh) {
+  const int n = mesh.num_vertices();
+  Eigen::VectorXd v0(2 * n);
+  v0 << Eigen::VectorXd::Constant(n, c.structure.v0.x()), Eigen::VectorXd::Constant(n, c.structure.v0.y());
+  return v0;
+}
+
 bool structure_load_varies(const Case& c) {
   return !c.structure.f_expression[0].empty() || !c.structure.f_expression[1].empty();
 }

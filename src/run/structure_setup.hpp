@@ -55,6 +55,9 @@ std::unique_ptr<QpSolver> make_qp_solver(const std::string& name);
 
 // b_S's applied part at time t (structure.f may be an expression in t): ∫ f_S·w + ∫_{Γ_N} h_S·w.
 Eigen::VectorXd structure_load(const Case& c, const Mesh& mesh, const P2Space* p2, double t);
+// structure.v0 at every vertex of `mesh` (the paper's ordering: every x, then every y):
+// a time run's initial velocity.
+Eigen::VectorXd initial_velocity(const Case& c, const Mesh& mesh);
 // Whether structure.f depends on anything (x, y or t): the load is then reassembled per step.
 bool structure_load_varies(const Case& c);
 

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/fault.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
@@ -22,14 +23,13 @@
 #include "io/vtu.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/mesh_checks.hpp"
+#include "run/outputs/animation.hpp"
 #include "run/outputs/fluid_outputs.hpp"
+#include "run/outputs/frame_series.hpp"
 #include "run/outputs/obstacle_forces.hpp"
 #include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
-#include "common/fault.hpp"
-#include "run/outputs/animation.hpp"
-#include "run/outputs/frame_series.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
 #include "run/time_run.hpp"
@@ -123,7 +123,6 @@ class TimeFluidProblem final : public Problem {
     if (!failure_.empty()) r.exit_status = 1, r.failure = failure_;
     else if (interrupted_) r.exit_status = interrupted_exit_status();
   }
-
 
   void summarise(RunResult& r) override {
     Json& j = r.summary;

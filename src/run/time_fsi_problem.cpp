@@ -20,21 +20,21 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/fault.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "coupling/fixed_point.hpp"
 #include "coupling/time_penalised_step.hpp"
 #include "io/vtu.hpp"
 #include "run/case_fields.hpp"
+#include "run/outputs/animation.hpp"
 #include "run/outputs/coupling_outputs.hpp"
 #include "run/outputs/fluid_outputs.hpp"
+#include "run/outputs/frame_series.hpp"
 #include "run/outputs/structure_history.hpp"
 #include "run/outputs/structure_outputs.hpp"
 #include "run/penalised_problem.hpp"
 #include "run/problem_kinds.hpp"
-#include "common/fault.hpp"
-#include "run/outputs/animation.hpp"
-#include "run/outputs/frame_series.hpp"
 #include "run/steady_start.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
@@ -126,20 +126,14 @@ class TimePenalisedFsi final : public PenalisedProblem {
   };
 
   int dofs() const { return 2 * s_->mesh().num_vertices(); }
-  Eigen::VectorXd initial_velocity() const {
-    const int n = s_->mesh().num_vertices();
-    Eigen::VectorXd v0(2 * n);
-    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
-    return v0;
-  }
 
   // From rest, or the steady state (time.start_from), with structure.v0: step 0's
   // state, row and frame.
   void start(Parts& p, const SteadyCoupledStart* steady) {
     if (steady)  // in equilibrium: no acceleration
-      state_ = newmark_->start(0.0, steady->structure.u, initial_velocity(), Eigen::VectorXd::Zero(dofs()), steady->structure);
+      state_ = newmark_->start(0.0, steady->structure.u, initial_velocity(c_, s_->mesh()), Eigen::VectorXd::Zero(dofs()), steady->structure);
     else
-      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(), s_->b_applied, s_->solver->at_rest());
+      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs()), initial_velocity(c_, s_->mesh()), s_->b_applied, s_->solver->at_rest());
     b_last_ = s_->b_applied;
     fluid_last_ = steady ? steady->fluid_load : Eigen::VectorXd::Zero(dofs());
     initial_ = row(0, 0);

@@ -14,20 +14,20 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/fault.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "fem/probes.hpp"
 #include "io/vtu.hpp"
+#include "run/outputs/animation.hpp"
+#include "run/outputs/frame_series.hpp"
 #include "run/outputs/output_dir.hpp"
 #include "run/outputs/structure_history.hpp"
 #include "run/outputs/structure_outputs.hpp"
 #include "run/problem_kinds.hpp"
 #include "run/run_case.hpp"
-#include "run/structure_setup.hpp"
-#include "common/fault.hpp"
-#include "run/outputs/animation.hpp"
-#include "run/outputs/frame_series.hpp"
 #include "run/steady_start.hpp"
+#include "run/structure_setup.hpp"
 #include "run/time_checkpoint.hpp"
 #include "run/time_progress.hpp"
 #include "run/time_run.hpp"
@@ -140,16 +140,15 @@ class TimeStructureProblem final : public Problem {
   // At rest at u = 0 (or the steady state: time.start_from) with the velocity
   // structure.v0: step 0, its row and frame.
   void start() {
-    const int n = s_.mesh().num_vertices();
-    Eigen::VectorXd v0(2 * n);
-    v0 << Eigen::VectorXd::Constant(n, c_.structure.v0.x()), Eigen::VectorXd::Constant(n, c_.structure.v0.y());
+    const long dofs = 2L * s_.mesh().num_vertices();
+    const Eigen::VectorXd v0 = initial_velocity(c_, s_.mesh());
     b_last_ = s_.b_applied;
     if (time_.start_from == "steady") {
       ContactSolution steady = steady_structure(c_);
       const Eigen::VectorXd u0 = steady.u;  // in equilibrium: no acceleration
-      state_ = newmark_->start(0.0, u0, v0, Eigen::VectorXd::Zero(2 * n), std::move(steady));
+      state_ = newmark_->start(0.0, u0, v0, Eigen::VectorXd::Zero(dofs), std::move(steady));
     } else {
-      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(2 * n), v0, b_last_, s_.solver->at_rest());
+      state_ = newmark_->start(0.0, Eigen::VectorXd::Zero(dofs), v0, b_last_, s_.solver->at_rest());
     }
     initial_ = row(0);
     add_frame();

@@ -266,7 +266,9 @@ struct ManufacturedNs {
     auto f = fluid(semi_implicit);
     FluidTimeStepper stepper(*f, rho, TimeScheme::bdf2, dt, fluid_at_rest(mesh));
     for (int k = 0; k < steps; ++k) stepper.step();
-    if (semi_implicit) EXPECT_EQ(f->newton()->total_steps, 0);  // one Oseen solve a step, no Newton step
+    if (semi_implicit) {
+      EXPECT_EQ(f->newton()->total_steps, 0);  // one Oseen solve a step, no Newton step
+    }
     return stepper.state();
   }
 };
