@@ -54,15 +54,16 @@ void FluidTimeStepper::begin(const std::function<void(double)>& data) {
   solved_ = false;
 }
 
-const FluidSolution& FluidTimeStepper::solve() {
-  *spare_ = fluid_.solve();
-  spare_->exact_on = nullptr;
+const FluidSolution& FluidTimeStepper::solve(SampledTriangles sampled) {
+  *spare_ = fluid_.solve(sampled);
   solved_ = true;
   return *spare_;
 }
 
 void FluidTimeStepper::accept() {
   if (!solved_) throw std::logic_error("FluidTimeStepper::accept before a solve of the step");
+  if (spare_->exact_on) *spare_ = fluid_.solution();  // the far field's expansion: one solve
+  spare_->exact_on = nullptr;
   std::swap(v_nm1_, spare_);  // (v^n, v^{n−1}, spare) ← (new, v^n, v^{n−1})
   std::swap(v_n_, v_nm1_);
   ++steps_;

@@ -31,10 +31,12 @@ class FluidTimeStepper {
 
   // The same step in parts, for a coupled step whose passes change χ and the
   // penalty's load (SPEC §12): begin() sets the data at t^{n+1} and the history;
-  // solve() solves with what the fluid holds now, once per pass; accept() makes the
-  // last pass's solution v^{n+1}. step() is begin, solve, accept.
+  // solve() solves with what the fluid holds now, once per pass, exact at least on
+  // `sampled` (null: everywhere; PenalisedStokes::solve); accept() makes the last
+  // pass's solution v^{n+1}, completed everywhere (the next step's history needs it).
+  // step() is begin, solve, accept.
   void begin(const std::function<void(double)>& data = {});
-  const FluidSolution& solve();
+  const FluidSolution& solve(SampledTriangles sampled = nullptr);
   void accept();
   // v^{n−1} (v^n before the first step) and the BDF weights of the step begun (or next).
   const FluidSolution& previous() const { return *v_nm1_; }

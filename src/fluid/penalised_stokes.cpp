@@ -83,6 +83,12 @@ void PenalisedStokes::terms_changed() {
   change_problem([&] { assembler_.forget_assembly(); });
 }
 
+void PenalisedStokes::near_terms_changed() {
+  assembler_.forget_assembly();
+  strategy_->near_changed();
+  ++version_;
+}
+
 void PenalisedStokes::reset() {
   solved_once_ = false;
   ++version_;

@@ -77,6 +77,14 @@ class PenalisedStokes {
   // The added terms' data changed (Newton's new velocity to linearise about): a new
   // version, every triangle assembled again.
   void terms_changed();
+  // The same where the change is confined to triangles with χ > 0, the added terms
+  // adding nothing where χ = 0 before and after (a coupled pass's penalty velocity):
+  // the substructured solve keeps its far field, and the last solution is then exact
+  // only where it was (its near region).
+  void near_terms_changed();
+  // The substructured solve's near region (a checkpoint's), and a resumed run's.
+  NearRegionState near_region_state() const { return strategy_->near_region_state(); }
+  void restore_near_region(NearRegionState state) { strategy_->restore_near_region(std::move(state)); }
   bool symmetric() const { return assembler_.symmetric(); }
   // Where χ is expected to go (per triangle, as χ; empty: nowhere known), e.g. the
   // structure under its applied loads alone: the substructured solve's first near

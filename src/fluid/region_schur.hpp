@@ -74,6 +74,13 @@ class RegionSchurSolver {
   // the far factors).
   const Eigen::VectorXd& solve_near(const ElementFunction& element);
   Eigen::VectorXd expand();
+  // A new load, the far field's operator perhaps unchanged (a time step's history, an
+  // inflow that changes in time): the far elements assembled again with element(t)
+  // and `load`. If the far matrix is the factorised one, value for value, the new load
+  // is condensed (one forward solve with the far factors) and true returned; if it
+  // changed, or the far factors were released, false: the region must be built again.
+  // The last solve_near() is no longer expandable.
+  bool refresh_far_load(const ElementFunction& element, const Eigen::VectorXd& load);
   const std::vector<int>& near_dofs() const { return near_dofs_; }
   const std::vector<int>& near_triangles() const { return near_triangles_; }
   const std::vector<char>& near_mask() const { return near_; }
@@ -88,13 +95,12 @@ class RegionSchurSolver {
 
  private:
   // The constructor's steps, in this order.
-  // Fills near_triangles_ and returns the far ones; throws if either is empty.
-  std::vector<int> split_triangles(const std::vector<char>& near);
+  // Fills near_triangles_ and far_triangles_; throws if either is empty.
+  void split_triangles(const std::vector<char>& near);
   // Fills far_dofs_, near_dofs_ and gamma_; throws if Γ is empty.
   void split_unknowns(const std::vector<char>& near, const ElementDofs& dofs);
   // K_far_ (lower triangle) and b_far_, the load included.
-  void assemble_far_field(const std::vector<int>& far_triangles, const ElementDofs& dofs,
-                          const ElementFunction& element, const Eigen::VectorXd& load);
+  void assemble_far_field(const ElementDofs& dofs, const ElementFunction& element, const Eigen::VectorXd& load);
   // S and y_Γ; the far factors released if over the budget.
   void factorize_far_field(double far_factor_budget_mb);
   // near_local_, M_'s pattern and load_near_.
@@ -102,10 +108,11 @@ class RegionSchurSolver {
   std::unique_ptr<SparseDirectSolver> make_near_solver() const;
 
   std::vector<char> near_;
-  std::vector<int> near_triangles_;
+  std::vector<int> near_triangles_, far_triangles_;
   std::vector<int> far_dofs_;   // far local → reduced (F then Γ)
   std::vector<int> near_dofs_;  // near local → reduced (Γ then I)
   std::vector<int> near_local_;  // reduced → near local, −1 if far only
+  std::vector<int> far_local_;   // reduced → far local, −1 if near only
   std::vector<int> gamma_;      // Γ's far-local indices, in the order of the near-local 0..|Γ|−1
   std::vector<int> far_order_, near_order_;  // fill-reducing orders (empty: the solver's own)
   std::string near_solver_name_;

@@ -29,6 +29,12 @@ struct FluidTiming {
   int far_refactorizations = 0;  // expansions that refactorised a released far field
 };
 
+// Where a substructured solve stands (see StokesSolveStrategy::near_region_state).
+struct NearRegionState {
+  std::vector<char> mask;  // the near triangles (empty: none)
+  double margin = 0;       // the region's margin around χ's support
+};
+
 // The triangles where a solution's fields will be read (null: everywhere).
 using SampledTriangles = const std::vector<int>*;
 
@@ -50,8 +56,21 @@ class StokesSolveStrategy {
   virtual void expect(Eigen::VectorXd /*chi_hint*/) {}
   // A new run (what it keeps for the next one: see the strategy).
   virtual void new_run() {}
-  // The assembler's loads changed (after settle()): what was condensed from them is stale.
+  // The assembler's loads or terms changed (after settle()): what was condensed from
+  // them is stale.
   virtual void load_changed() {}
+  // The added terms changed on triangles where χ > 0 only, and add nothing where χ = 0,
+  // before or after (the penalty's velocity between a coupled step's passes): the last
+  // solution is not needed beyond where it is exact. By default as any change.
+  virtual void near_changed() {
+    settle();
+    load_changed();
+  }
+  // The substructured solve's near region, for a checkpoint: a resumed run factorises
+  // the same region, so that its numbers are the uninterrupted run's to the bit (empty
+  // mask: no region to restore).
+  virtual NearRegionState near_region_state() const { return {}; }
+  virtual void restore_near_region(NearRegionState /*state*/) {}
   // The new run starts from the last run's state (a warm start): what the last run
   // ended with may serve its first solve (see the strategy).
   virtual void continue_last_run() {}
@@ -102,8 +121,13 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   // The run's first region is the last run's if it covers the first χ (however it
   // rounds: a warm start is not a run of its own), its far field not refactorised.
   void continue_last_run() override { continue_region_ = true; }
-  // The far field's condensed load is the old one: the next solve builds a new region.
+  // The far field's condensed load is the old one: the next solve condenses the new
+  // one, or builds the region again if the far field's operator changed.
   void load_changed() override;
+  // The last solution stays exact on its near region only (no expansion).
+  void near_changed() override;
+  NearRegionState near_region_state() const override;
+  void restore_near_region(NearRegionState state) override;
   std::string name() const override { return whole_.name() + "+schur"; }
   // MUMPS's Schur complement (SYM = 2) and the far field's self-adjoint products.
   bool needs_symmetry() const override { return true; }
@@ -117,6 +141,7 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   void start_region(const Eigen::VectorXd& chi, double eps);
   std::vector<char> region_mask(const Eigen::VectorXd& chi);
   void build_near_region(const Eigen::VectorXd& chi, double eps, std::vector<char> near);
+  void refresh_far_load(const Eigen::VectorXd& chi, double eps);
 
   StokesAssembler& assembler_;
   WholeSolve whole_;  // when the near region would be most of D, or χ = 0
@@ -134,6 +159,8 @@ class SubstructuredSolve final : public StokesSolveStrategy {
   bool too_large_ = false;                    // the near region would be most of D: solve whole
   bool first_of_run_ = true;                  // the next solve is a run's first
   bool continue_region_ = false;              // see continue_last_run()
+  bool far_load_stale_ = false;               // see load_changed()
+  std::vector<char> restored_mask_;           // see restore_near_region()
   // The last solution is exact on the near region only; its χ and ε, for the
   // expansion (and the bubbles it recovers).
   bool pending_expansion_ = false;

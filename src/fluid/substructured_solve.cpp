@@ -28,12 +28,17 @@ SubstructuredSolve::SubstructuredSolve(StokesAssembler& assembler, const std::st
 // whole solve first.
 void SubstructuredSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) {
   if (!too_large_ && (chi.array() != 0).any()) {
+    if (!restored_mask_.empty()) {
+      build_near_region(chi, eps, std::move(restored_mask_));
+      restored_mask_.clear();
+    }
     if (first_of_run_) {
       first_of_run_ = false;
       start_region(chi, eps);
     } else if (!region_ || !near_region_covers(chi)) {
       build_near_region(chi, eps, region_mask(chi));
     }
+    if (region_ && far_load_stale_) refresh_far_load(chi, eps);
     if (region_) {
       solve_near(chi, eps);
       if (!exact_on(sampled)) expand();
@@ -129,11 +134,45 @@ void SubstructuredSolve::expect(Eigen::VectorXd chi_hint) {
   hint_ = std::move(chi_hint);
 }
 
+// The region and its far factors are kept: in a time run every step changes the
+// load (the history, the inflow) and, after BDF2's first step, not the far operator.
 void SubstructuredSolve::load_changed() {
+  pending_expansion_ = false;
+  continue_region_ = false;
+  far_load_stale_ = region_ != nullptr;
+}
+
+void SubstructuredSolve::refresh_far_load(const Eigen::VectorXd& chi, double eps) {
+  far_load_stale_ = false;
+  const Stopwatch clock;
+  const bool kept = region_->refresh_far_load([&](int t) { return assembler_.element_system(t, chi[t] / eps); },
+                                              assembler_.traction_load());
+  timing_.assembly += clock.elapsed();  // the far elements again, and one forward solve
+  if (!kept) build_near_region(chi, eps, std::vector<char>(region_->near_mask()));
+}
+
+void SubstructuredSolve::near_changed() {
+  if (!pending_expansion_) return;
+  stale_mask_ = region_->near_mask();
+  out_.exact_on = &stale_mask_;
+  pending_expansion_ = false;
+}
+
+NearRegionState SubstructuredSolve::near_region_state() const {
+  if (!region_) return {};
+  return {region_->near_mask(), margin_};
+}
+
+// The next solve builds this region (with the problem it has then) instead of a run's
+// first; the far field is assembled and factorised as the interrupted run's was.
+void SubstructuredSolve::restore_near_region(NearRegionState state) {
+  if (state.mask.empty()) return;
   region_.reset();
   pending_expansion_ = false;
-  first_of_run_ = true;
-  continue_region_ = false;
+  first_of_run_ = false;
+  too_large_ = false;
+  margin_ = state.margin;
+  restored_mask_ = std::move(state.mask);
 }
 
 void SubstructuredSolve::new_run() {
@@ -201,6 +240,7 @@ void SubstructuredSolve::build_near_region(const Eigen::VectorXd& chi, double ep
                                            std::vector<char> near) {
   settle();  // the last solution needs the old region
   region_.reset();
+  far_load_stale_ = false;
   if (too_large_) return;
   const Stopwatch clock;
   const Mesh& mesh = assembler_.mesh();

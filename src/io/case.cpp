@@ -302,12 +302,6 @@ void read_time(const toml::table& root, const Origin& origin, Case& c, std::vect
   if (!(p.dt <= p.t_end))
     fail(origin, "time.dt", "= " + shortest(p.dt) + " exceeds time.t_end = " + shortest(p.t_end),
          "(0, time.t_end]");
-  // The far field's Schur complement condenses the load, which changes at every step.
-  if (const toml::table* fluid = section_table(root, "fluid", origin);
-      fluid && fluid->contains("factorization") && c.fluid && c.fluid->factorization == "schur")
-    fail(origin, "fluid.factorization", "= \"schur\" condenses the load, which changes at every time step",
-         "\"whole\" (the default with [time])");
-  if (c.fluid) c.fluid->factorization = "whole";
   const double max_steps = case_limits().time_steps;
   if (p.t_end / p.dt > max_steps)
     fail(origin, "time.t_end", "/ time.dt = " + shortest(p.t_end / p.dt) + " steps is over the limit",

@@ -127,6 +127,29 @@ FluidSolution get_fluid(const Checkpoint& k, const std::string& name, int vertic
   return s;
 }
 
+void put_near_region(Checkpoint& k, const NearRegionState& s) {
+  if (s.mask.empty()) return;
+  std::vector<int> near;
+  for (std::size_t t = 0; t < s.mask.size(); ++t)
+    if (s.mask[t]) near.push_back(static_cast<int>(t));
+  k.put_ints("near_region.triangles", near);
+  k.put("near_region.margin", s.margin);
+}
+
+NearRegionState get_near_region(const Checkpoint& k, int triangles) {
+  NearRegionState s;
+  if (!k.has("near_region.triangles")) return s;
+  s.mask.assign(static_cast<std::size_t>(triangles), 0);
+  for (int t : k.ints("near_region.triangles")) {
+    if (t < 0 || t >= triangles)
+      throw InputError(k.source + ": its fluid near region names triangle " + std::to_string(t) + " of " +
+                       std::to_string(triangles));
+    s.mask[static_cast<std::size_t>(t)] = 1;
+  }
+  s.margin = k.scalar("near_region.margin");
+  return s;
+}
+
 void put_rows(Checkpoint& k, const StructureRow& initial, const std::vector<StructureRow>& rows) {
   const Eigen::VectorXd first = row_values(initial);
   Eigen::MatrixXd all(first.size(), 1 + static_cast<long>(rows.size()));

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fluid/stokes_assembler.hpp"
+#include "fluid/stokes_strategy.hpp"
 #include "io/case.hpp"
 #include "io/checkpoint.hpp"
 #include "run/outputs/structure_history.hpp"
@@ -34,6 +35,11 @@ NewmarkState get_newmark(const Checkpoint& k, long dofs);
 
 void put_fluid(Checkpoint& k, const std::string& name, const FluidSolution& s);
 FluidSolution get_fluid(const Checkpoint& k, const std::string& name, int vertices, int triangles);
+
+// The substructured fluid solve's near region (fluid/stokes_strategy.hpp); none if
+// the checkpoint has none. A region that is not one of `triangles` is an InputError.
+void put_near_region(Checkpoint& k, const NearRegionState& s);
+NearRegionState get_near_region(const Checkpoint& k, int triangles);
 
 void put_rows(Checkpoint& k, const StructureRow& initial, const std::vector<StructureRow>& rows);
 void get_rows(const Checkpoint& k, StructureRow& initial, std::vector<StructureRow>& rows);

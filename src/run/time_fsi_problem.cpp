@@ -144,6 +144,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
   void continue_from(Parts& p) {
     p.stepper.restore(state_.step, restored_->v_n, restored_->v_nm1);
     if (state_.step > 0) f_->stokes->start_from(restored_->v_n);  // Newton's next start
+    f_->stokes->restore_near_region(std::move(restored_->near_region));
     p.relaxation->restore(restored_->relaxation);
     p.structure.begin();  // as the first window's run() does
     restored_.reset();
@@ -176,6 +177,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
       k.put("b_last", b_last_), k.put("fluid_last", fluid_last_), k.put("work", work_);
       put_fluid(k, "v_n", p.stepper.state());
       put_fluid(k, "v_nm1", p.stepper.previous());
+      put_near_region(k, f_->stokes->near_region_state());
       for (const auto& [name, values] : p.relaxation->saved()) k.put("relaxation." + name, values);
       put_rows(k, initial_, rows_);
       structure_frames_.save(k), fluid_frames_.save(k), pictures_.save(k);
@@ -186,7 +188,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
     const int nv = f_->mesh->num_vertices(), nt = f_->mesh->num_triangles();
     state_ = get_newmark(k, n);
     b_last_ = k.vector("b_last", n), fluid_last_ = k.vector("fluid_last", n), work_ = k.scalar("work");
-    restored_ = Restored{get_fluid(k, "v_n", nv, nt), get_fluid(k, "v_nm1", nv, nt), {}};
+    restored_ = Restored{get_fluid(k, "v_n", nv, nt), get_fluid(k, "v_nm1", nv, nt), {}, get_near_region(k, nt)};
     const std::string prefix = "relaxation.";
     for (const auto& [name, values] : k.arrays())
       if (name.rfind(prefix, 0) == 0) restored_->relaxation[name.substr(prefix.size())] = values;
@@ -298,6 +300,7 @@ class TimePenalisedFsi final : public PenalisedProblem {
   struct Restored {
     FluidSolution v_n, v_nm1;
     Relaxation::State relaxation;
+    NearRegionState near_region;
   };
   std::optional<Restored> restored_;  // a checkpoint's, until solve() gives it to the loop's parts
 };

@@ -216,7 +216,6 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"time_with_a_fluid_without_its_density", kValid + "[fluid]\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.rho=1", {"fluid.rho", "required with [time]"}},
       {"time_without_rho", kValid + "[fluid]\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.shape=none", {"fluid.rho", "required with [time]"}},
       {"time_unknown_key", kValid + "[fluid]\nrho = 1\n[time]\ndt = 0.1\nt_end = 1\ncheckpoint = 5\n", "--set structure.shape=none", {"time.checkpoint", "not a known key"}},
-      {"time_on_the_schur_path", kValid + "[fluid]\nrho = 1\nfactorization = \"schur\"\n[time]\ndt = 0.1\nt_end = 1\n", "--set structure.shape=none", {"fluid.factorization", "every time step"}},
       {"fluid_probes_without_fluid", kValid + "[output]\nfluid_probes = [[0.01, 0.01]]\n", "", {"output.fluid_probes", "[fluid]"}},
       {"fluid_probe_in_a_hole", kValid + "[fluid]\nh = 0.004\n[output]\nfluid_probes = [[0.055, -0.012]]\n", "", {"output.fluid_probes[1]", "outside the fluid domain"}},
       {"fluid_probes_not_points", kValid + "[fluid]\nh = 0.004\n[output]\nfluid_probes = 3\n", "", {"output.fluid_probes", "array of [x, y] points"}},

@@ -33,7 +33,8 @@ nlohmann::json answer(const fs::path& dir) {
   s["parameters"]["output"].erase("dir");
   if (s.contains("fluid")) {
     for (const char* key : {"analyses", "factorizations", "reused_solutions", "assembly_s", "analysis_s",
-                            "factorization_s", "solve_s", "far_factorization_s", "expansion_s", "newton"})
+                            "factorization_s", "solve_s", "far_factorization_s", "expansion_s", "newton",
+                            "far_field_factorizations", "far_field_refactorizations"})
       s["fluid"].erase(key);
   }
   return s;

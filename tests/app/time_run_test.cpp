@@ -71,18 +71,24 @@ TEST(TimeRun, Dfg2d3sFirstStepsWriteHistoryFramesAndSummary) {
   fs::remove_all(dir);
 }
 
-// Stokes in time (ρ given, no convection): the same steps on the whole factorisation.
+// Stokes in time (ρ given, no convection): the symmetric solver, on the substructured
+// factorisation by default (with χ = 0 it solves the whole system) and on the whole one.
 TEST(TimeRun, StokesInTimeRunsOnTheSymmetricSolver) {
   const fs::path dir = testing::scratch_dir("time-stokes");
-  const testing::CliRun r = testing::run_cli(
-      "run " + kDfg2d3 + " -q --out res --set output.png=false --set output.vtu=false --set fluid.model=stokes" + kCoarse,
-      dir);
+  const std::string run =
+      "run " + kDfg2d3 + " -q --set output.png=false --set output.vtu=false --set fluid.model=stokes" + kCoarse;
+  const testing::CliRun r = testing::run_cli(run + " --out res", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto s = nlohmann::json::parse(testing::slurp(dir / "res/summary.json"));
   EXPECT_EQ(s["time"]["steps"], 5);
   EXPECT_EQ(s["fluid"]["model"], "stokes");
-  EXPECT_EQ(s["fluid"]["factorization"], "whole");
-  EXPECT_GT(s["obstacles"][0]["force"][0].get<double>(), 0);
+  EXPECT_EQ(s["fluid"]["factorization"], "schur");
+  const double drag = s["obstacles"][0]["force"][0].get<double>();
+  EXPECT_GT(drag, 0);
+  ASSERT_EQ(testing::run_cli(run + " --out whole --set fluid.factorization=whole", dir).status, 0);
+  const auto w = nlohmann::json::parse(testing::slurp(dir / "whole/summary.json"));
+  EXPECT_EQ(w["fluid"]["factorization"], "whole");
+  EXPECT_NEAR(w["obstacles"][0]["force"][0].get<double>(), drag, 1e-12 * drag);
   fs::remove_all(dir);
 }
 
