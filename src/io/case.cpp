@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/input_file.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_section.hpp"
 #include "io/output_path.hpp"
@@ -345,6 +346,10 @@ Case read_case(const toml::table& root, const Origin& origin, const std::string&
     c.contact.boundary = s.choice("boundary", c.contact.boundary, {"Gamma_C", "all"});
     s.reject_unknown();
   }
+  // obstacles = []: no contact can happen, so neither contact.gap nor contact.boundary
+  // matters; they resolve to what needs no obstacle (eq. 15's gap is one disk's, and a
+  // generated rectangle's Gamma_C that disk's span).
+  if (c.obstacles_given && c.obstacles.empty()) c.contact.gap = "normal", c.contact.boundary = "all";
   read_output(root, origin, c, known);
   read_time(root, origin, c, known);
   check_case(c, origin);
@@ -398,8 +403,9 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
   Origin origin{path.empty() ? "(built-in paper-7.2 case)" : path, {}};
   toml::table root;
   if (!path.empty()) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such case file");
+    if (const std::string problem = input_file_problem(path, "case", "a regular TOML file (e.g. cases/paper-7.2.toml)");
+        !problem.empty())
+      throw InputError(path + ": " + problem);
     try {
       root = toml::parse_file(path);
     } catch (const toml::parse_error& e) {

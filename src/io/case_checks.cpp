@@ -33,6 +33,13 @@ void check_contact_zone(const Case& c, const Origin& o) {
   const auto& s = c.structure;
   const auto& ob = c.obstacle;
   const double piece = s.h / 20;
+  // A contact row sits at a vertex strictly inside Γ_C (SPEC §2): Γ_C = 2·gamma·r must
+  // be longer than a mesh edge (and a tiny one, below the coordinates' round-off, is
+  // no boundary piece at all for the mesher).
+  if (!(2 * ob.gamma * ob.r > s.h))
+    fail(o, "obstacle.gamma", "= " + shortest(ob.gamma) + " makes Gamma_C (2 * gamma * r = " + approx(2 * ob.gamma * ob.r) +
+             ") no longer than a mesh edge (structure.h = " + shortest(s.h) + "): no vertex inside it, no contact row",
+         "gamma > structure.h / (2 r) = " + approx(s.h / (2 * ob.r)) + " and < 1, or a smaller structure.h");
   const std::string zone = "Gamma_C = (" + approx(ob.xc_min(), 6) + ", " + approx(ob.xc_max(), 6) + ")";
   if (!(ob.xc_min() >= piece))
     fail(o, "obstacle.x0", "puts " + zone + " only " + approx(ob.xc_min()) + " from the structure's clamped end x = 0",

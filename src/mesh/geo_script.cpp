@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "common/input_file.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace fsi {
@@ -112,8 +113,9 @@ void check_geo_script(const std::string& text, const std::string& path) {
 
 std::string read_geo_script(const std::string& path) {
   namespace fs = std::filesystem;
+  if (const std::string problem = input_file_problem(path, "script", "a Gmsh .geo file"); !problem.empty())
+    throw MeshError(path + ": " + problem);
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw MeshError(path + ": no such script file");
   if (fs::path(path).extension() != ".geo")
     throw MeshError(path + ": a structure script must be a Gmsh .geo file (the extension .geo)");
   const auto size = fs::file_size(path, ec);

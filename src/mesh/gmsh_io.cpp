@@ -6,6 +6,7 @@
 #include <fstream>
 #include <functional>
 
+#include "common/input_file.hpp"
 #include "mesh/gmsh_child.hpp"
 #include "mesh/geo_script.hpp"
 #include "mesh/gmsh_model.hpp"
@@ -53,8 +54,8 @@ Mesh generate(const std::string& doing, const std::function<RawMesh()>& mesher, 
 // A data file must never run as code: only a .msh starting with "$MeshFormat".
 void check_mesh_file(const std::string& path) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw MeshError(path + ": no such mesh file");
+  if (const std::string problem = input_file_problem(path, "mesh", "a Gmsh .msh file"); !problem.empty())
+    throw MeshError(path + ": " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshError(path + ": cannot be read");
   if (fs::path(path).extension() != ".msh")

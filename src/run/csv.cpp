@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 
 namespace fsi {
 namespace {
@@ -41,8 +42,8 @@ bool split_csv_line(const std::string& line, std::vector<std::string>& cells) {
 }  // namespace
 
 CsvTable read_csv(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such rows file");
+  if (const std::string problem = input_file_problem(path, "rows", "a CSV file of section.key columns"); !problem.empty())
+    throw InputError(path + ": " + problem);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": no such rows file");
   CsvTable t;

@@ -50,7 +50,7 @@ TEST(Case, TheShippedSection72FileEqualsTheBuiltInDefault) {
 }
 
 TEST(Case, WithoutAFluidSectionIsContactOnly) {
-  const Case c = load_case_text("name = \"x\"\n[structure]\nL = 0.06\nH = 0.005\n[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\n", "x.toml");
+  const Case c = load_case_text("name = \"x\"\n[structure]\nL = 0.06\nH = 0.005\nh = 0.001\n[obstacle]\nx0 = 0.055\ny0 = -0.012\nr = 0.005\n", "x.toml");
   EXPECT_FALSE(c.fluid.has_value());
   EXPECT_EQ(c.structure.L, 0.06);
 }
