@@ -67,11 +67,11 @@ class TimePenalisedFsi final : public PenalisedProblem {
     else start(parts, steady ? &*steady : nullptr);
     const int steps = time_.steps();
     progress_.start_after(state_.step);
-    bool stepped = false;
+    bool attempted = false;  // a step was begun (its coupling ran, converged or not)
     for (int k = run_.first_step(); k <= steps; ++k) {
       if ((interrupted_ = interrupt_requested())) break;
+      attempted = true;
       if (!step(parts, k, times)) break;
-      stepped = true;
       if (run_.frame_due(k)) add_frame(parts);
       if (run_.checkpoint_due(k)) save(parts);
       fault_step(k);
@@ -82,7 +82,9 @@ class TimePenalisedFsi final : public PenalisedProblem {
     // resumed run writes the series an uninterrupted run would have).
     if ((interrupted_ || !result_.failure.empty() || !result_.converged) && structure_frames_.last_step() != state_.step)
       add_frame(parts);
-    if (!stepped && result_.failure.empty()) result_.converged = true;  // resumed at its end: nothing to do
+    // Resumed at its end (or stopped before its first step): nothing was to converge.
+    // A first step whose coupling did not converge is not that: its status stands.
+    if (!attempted && result_.failure.empty()) result_.converged = true;
     result_.structure = state_.contact;  // the final state the penalised run measures
     if (interrupted_) result_.interrupted = true;
     complete_fluid();

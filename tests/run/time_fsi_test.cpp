@@ -105,5 +105,23 @@ TEST(TimeFsi, TheSubstructuredStepFactorisesTheFarFieldOnceAndAgreesWithTheWhole
   fs::remove_all(dir);
 }
 
+// A first step whose coupling stops at its pass limit ends the run as "iteration limit"
+// (exit 3) with no step taken; it had been reported as converged, exit 0, because a
+// run with no step taken was taken for one resumed at its end.
+TEST(TimeFsi, AFirstStepThatDoesNotConvergeIsAnIterationLimit) {
+  const fs::path dir = testing::scratch_dir("time-fsi-first-step");
+  const Case c = load_case(std::string(FSICONTACT_SOURCE_DIR) + "/cases/paper-7.2-dynamic.toml",
+                           {"fluid.h=0.03", "structure.h=0.03", "time.t_end=0.04", "output.png=false",
+                            "output.vtu=false", "coupling.max_iterations=2", "coupling.tol=1e-12"},
+                           (dir / "out").string());
+  const RunResult r = run_case(c, {});
+  EXPECT_EQ(r.exit_status, 3) << r.failure;
+  EXPECT_EQ(r.summary["status"], "iteration limit");
+  EXPECT_EQ(r.summary["converged"], false);
+  EXPECT_EQ(r.summary["steps"], 0);
+  EXPECT_TRUE(fs::exists(dir / "out/summary.json"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsi::time_fsi_test
