@@ -117,7 +117,8 @@ TEST(TimeResume, TheCoupledRunContinuesBitForBit) {
   const auto s = run_stop_resume(
       "resume-coupled",
       "run " + kCases + "paper-7.2-dynamic.toml' --set fluid.h=0.03 --set structure.h=0.03 --set time.dt=0.02 "
-      "--set time.t_end=0.12 --set time.output_every=2 --set output.png=false",
+      "--set time.t_end=0.12 --set time.output_every=2 --set output.png=false --set coupling.scheme=iqn-ils "
+      "--set coupling.reuse=4 --set coupling.tol=1e-4",
       3, 3);
   EXPECT_EQ(s["steps"], 6);
   EXPECT_EQ(s["status"], "converged");
