@@ -39,7 +39,7 @@ namespace {
 class TimeStructureProblem final : public Problem {
  public:
   TimeStructureProblem(const Case& c, const RunOptions& options)
-      : c_(c), time_(*c.time), options_(options), progress_(options.progress), run_(c, kind()) {}
+      : c_(c), time_(*c.time), progress_(options.progress), run_(c, kind()) {}
   const char* kind() const override { return "contact"; }
   bool streams() const override { return true; }
   void open(RunOutputs& out) override { run_.open(out); }
@@ -210,7 +210,6 @@ class TimeStructureProblem final : public Problem {
 
   const Case& c_;
   TimeParams time_;
-  const RunOptions& options_;
   TimeProgress progress_;
   MeshStatistics stats_;
   StructureSetup s_;

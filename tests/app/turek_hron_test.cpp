@@ -71,5 +71,28 @@ TEST(TurekHron, Csm1TipWithP2) {
   fs::remove_all(dir);
 }
 
+// The P2 path of a static nonlinear run on a coarse mesh, its outputs included (the
+// accuracy test above is a study, run in Release only): Newton converges, the probe
+// is read on the quadratic nodes, and the VTU holds VTK's quadratic triangles with
+// the von Mises stress of the P2 field; the picture is drawn.
+TEST(TurekHron, P2RunWritesQuadraticCellsAndItsProbe) {
+  const fs::path dir = testing::scratch_dir("turek-hron-p2-outputs");
+  const std::string csm1 = "'" + std::string(FSICONTACT_SOURCE_DIR) + "/cases/turek-hron-csm1.toml'";
+  const testing::CliRun r =
+      testing::run_cli("run " + csm1 + " --set structure.h=0.01 --set structure.element=P2 --out r -q", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "r/summary.json"));
+  EXPECT_EQ(j["parameters"]["structure"]["element"], "P2");
+  EXPECT_LE(j["newton"]["residual"].get<double>(), 1e-10);
+  EXPECT_NEAR(j["displacement_at"][0]["u"][1].get<double>(), -66.10e-3, 0.05 * 66.10e-3);  // coarse: within 5 %
+  const auto vtu = testing::read_vtu(dir / "r/structure.vtu");
+  const std::vector<double>& types = vtu.at("types");
+  ASSERT_FALSE(types.empty());
+  EXPECT_TRUE(std::all_of(types.begin(), types.end(), [](double t) { return t == 22; }));
+  EXPECT_EQ(vtu.at("connectivity").size(), 6 * types.size());
+  EXPECT_TRUE(fs::exists(dir / "r/structure.png"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fsi::turek_hron_test
