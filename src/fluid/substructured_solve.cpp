@@ -142,13 +142,15 @@ void SubstructuredSolve::load_changed() {
   far_load_stale_ = region_ != nullptr;
 }
 
+// Stale until it succeeds: a failed condensation (a non-finite load) is tried again
+// by the next solve, never skipped.
 void SubstructuredSolve::refresh_far_load(const Eigen::VectorXd& chi, double eps) {
-  far_load_stale_ = false;
   const Stopwatch clock;
   const bool kept = region_->refresh_far_load([&](int t) { return assembler_.element_system(t, chi[t] / eps); },
                                               assembler_.traction_load());
   timing_.assembly += clock.elapsed();  // the far elements again, and one forward solve
-  if (!kept) build_near_region(chi, eps, std::vector<char>(region_->near_mask()));
+  if (kept) far_load_stale_ = false;
+  else build_near_region(chi, eps, std::vector<char>(region_->near_mask()));  // clears it
 }
 
 void SubstructuredSolve::near_changed() {

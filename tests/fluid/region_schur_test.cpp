@@ -288,6 +288,39 @@ TEST(RegionSchur, ANewLoadWithTheSameChiIsSolvedAgain) {
   }
 }
 
+// A new load keeps the far field's factors (its new load condensed: a time step's
+// history, an inflow in time); a new operator there (another viscous form) or far
+// factors released between expansions factorise the region again. Each answer is a
+// fresh solve's.
+TEST(RegionSchur, ANewLoadKeepsTheFarFactorsAndANewOperatorRefactorises) {
+  const Box box;
+  const Eigen::VectorXd chi = box.block(0.3, 0.3, 0.2, 0.2);
+  const VectorField other = [](const Point& x) { return Point(3.0 * x.x(), -2.0); };
+  auto fresh = [&](ViscousForm form) {
+    auto f = box.stokes(1e-4, FluidFactorization::whole, INFINITY, other);
+    f->set_viscous_form(form);
+    f->set_chi(chi);
+    return FluidSolution(f->solve());
+  };
+  auto s = box.stokes(1e-4, FluidFactorization::schur);
+  s->set_chi(chi);
+  s->solve();
+  ASSERT_EQ(s->timing().regions, 1);
+  s->set_body_force(other);
+  EXPECT_LT(relative_difference(fresh(ViscousForm::symmetric), s->solve()), 1e-10);
+  EXPECT_EQ(s->timing().regions, 1) << "a new load refactorised the far field";
+  s->set_viscous_form(ViscousForm::gradient);
+  EXPECT_LT(relative_difference(fresh(ViscousForm::gradient), s->solve()), 1e-10);
+  EXPECT_EQ(s->timing().regions, 2) << "a new far operator kept the old factors";
+
+  auto released = box.stokes(1e-4, FluidFactorization::schur, 0.0);  // no far factors kept
+  released->set_chi(chi);
+  released->solve();
+  released->set_body_force(other);
+  EXPECT_LT(relative_difference(fresh(ViscousForm::symmetric), released->solve()), 1e-10);
+  EXPECT_EQ(released->timing().regions, 2);
+}
+
 TEST(RegionSchur, FallsBackToTheWholeSolveWhenChiCoversMostOfTheDomain) {
   const Box box;
   auto whole = box.stokes(1e-4, FluidFactorization::whole);
