@@ -18,7 +18,8 @@
 
 namespace fsi {
 
-// Maps a displacement to the nearest feasible one (A_S-norm): the structure step's
+// Maps a displacement to the nearest feasible one (the structure operator's norm:
+// A_S, A_S + c M in a time step): the structure step's
 // (StructureStep::project), given by the loop with each update.
 using Projection = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 

@@ -85,8 +85,9 @@ class ElasticContactSolver {
   // about a new state); A_S and its factorisation are kept.
   void set_constraint(ContactConstraint contact);
 
-  // The feasible displacement nearest to z in the A_S-norm: z itself if C_S z ≥ c_lb,
-  // otherwise the QP with load A_S z (min ½(ξ−z)ᵀA_S(ξ−z) s.t. C_S ξ ≥ c_lb).
+  // The feasible displacement nearest to z in the norm of the operator K = A_S (+ c M
+  // with inertia): z itself if C_S z ≥ c_lb, otherwise the QP with load K z
+  // (min ½(ξ−z)ᵀK(ξ−z) s.t. C_S ξ ≥ c_lb).
   Eigen::VectorXd project(const Eigen::VectorXd& z);
 
   const SparseMatrix& A_S() const { return A_S_; }

@@ -145,5 +145,44 @@ TEST(Newmark, ANonlinearMaterialsStepsTakeTheInertiaInNewtonsMethod) {
   EXPECT_GT((a.u - b.u).norm(), 1e-8 * a.u.norm());  // it is the nonlinear model
 }
 
+// A time step's feasible-set projection (the relaxation's, coupling/relaxation.hpp) is
+// the nearest feasible point in the step operator's norm A_S + c M: no farther from z
+// than any other feasible point. A floor 1 mm under the beam; z bends it 3 mm down at
+// the tip. With the load A_S z alone (the defect this guards) the "projection" was
+// (A_S + c M)⁻¹ A_S z, about 0 where the mass dominates: the whole bend away from z,
+// where the nearest point moves only the part below the floor (IQN-ILS's updates on
+// paper-7.2-dynamic stalled on it, 12 passes a step instead of 4).
+TEST(Newmark, ATimeStepsProjectionIsTheNearestFeasiblePointInItsNorm) {
+  for (bool nonlinear : {false, true}) {
+    Cantilever beam(1e-4);  // (4/Δt²) M against A_S: the mass's norm dominates
+    const int nv = beam.mesh.num_vertices();
+    std::vector<int> bottom;  // the bottom's vertices off the clamped side
+    for (int v : beam.mesh.vertices_on(beam.mesh.label("bottom")))
+      if (beam.mesh.vertices[v].x() > 0) bottom.push_back(v);
+    std::vector<Eigen::Triplet<double>> rows;
+    for (std::size_t i = 0; i < bottom.size(); ++i) rows.emplace_back(static_cast<int>(i), nv + bottom[i], 1.0);
+    ContactConstraint floor{SparseMatrix(static_cast<Eigen::Index>(bottom.size()), 2 * nv),
+                            Eigen::VectorXd::Constant(static_cast<Eigen::Index>(bottom.size()), -1e-3), bottom};
+    floor.C_S.setFromTriplets(rows.begin(), rows.end());
+    beam.solver->set_constraint(floor);
+    if (nonlinear) beam.solver->set_material({MaterialModel::saint_venant_kirchhoff, kLame});
+    const SparseMatrix K = beam.solver->A_S() + Newmark::operator_factor(beam.dt) * beam.M;
+    const auto norm = [&K](const Eigen::VectorXd& x) { return std::sqrt(x.dot(K * x)); };
+
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(2 * nv), clamped = z;
+    for (int v = 0; v < nv; ++v) {
+      const double x = beam.mesh.vertices[v].x();
+      z[nv + v] = -3e-3 * x * x;
+      clamped[nv + v] = std::max(z[nv + v], -1e-3);  // feasible: every vertex above the floor
+    }
+    const Eigen::VectorXd feasible = 0.3 * z;  // a feasible z: the projection keeps it
+    EXPECT_EQ((beam.solver->project(feasible) - feasible).norm(), 0.0);
+    const Eigen::VectorXd p = beam.solver->project(z);
+    EXPECT_GE((floor.C_S * p - floor.c_lb).minCoeff(), -1e-12) << "nonlinear " << nonlinear;
+    EXPECT_LE(norm(p - z), norm(clamped - z) * (1 + 1e-9)) << "nonlinear " << nonlinear;
+    EXPECT_LT(norm(p - z), 0.5 * norm(z)) << "nonlinear " << nonlinear;
+  }
+}
+
 }  // namespace
 }  // namespace fsi::newmark_test
