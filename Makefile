@@ -14,7 +14,7 @@ TEST_BUDGET ?= 20
 INSTRUMENTED_TEST_BUDGET ?= 120
 
 .PHONY: demo test build program tests configure deps clean check-instrumented instrumented-build instrumented-suite \
-        fuzz-smoke fuzz test-sanitize bench-compare
+        fuzz-smoke fuzz test-sanitize bench-compare install package
 
 deps:
 	@scripts/install-deps.sh
@@ -42,6 +42,18 @@ build: configure
 demo: program
 	@$(BUILD)/app/fsicontact run $(DEMO_CASE)
 	@echo "demo: results in $(DEMO_OUT)"
+
+# The program, its Gmsh plugin, the example cases, the docs and the man page under
+# PREFIX (CMakeLists.txt's install rules; the same as cmake --install build --prefix P).
+PREFIX ?= /usr/local
+install: program
+	@cmake --install $(BUILD) --prefix $(PREFIX)
+
+# A Debian package of the same install under /usr (CPack, CMakeLists.txt): its
+# dependencies computed from the libraries it links (dpkg-shlibdeps). Checked by
+# scripts/check-deb.sh; install it with apt-get install ./$(BUILD)/fsicontact_*.deb.
+package: program
+	@cd $(BUILD) && cpack -G DEB > /dev/null && ls fsicontact_*.deb
 
 # The whole suite in Release, then its time budget (cmake/TestBudget.cmake).
 test: tests

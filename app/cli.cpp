@@ -5,6 +5,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "io/case.hpp"
+#include "run/provenance.hpp"
 #include "run/run_case.hpp"
 #include "run/sweep.hpp"
 #include "study/converge.hpp"
@@ -168,6 +169,10 @@ int run_subcommand(const CliArgs& a, const CLI::App& sweep, const CLI::App& conv
 int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{"fsicontact: fluid-structure interaction with contact against a rigid obstacle (Murea 2017)"};
   app.require_subcommand(0, 1);
+  // The version, the commit and the libraries (run/provenance.hpp), as summary.json's "program".
+  std::string version = provenance_text();
+  version.pop_back();  // CLI11 ends the line itself
+  app.set_version_flag("--version", version, "print the version, the commit and the libraries, and exit");
   CliArgs args;
   add_run_command(app, args);
   CLI::App* sweep = add_sweep_command(app, args);

@@ -26,6 +26,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev # the instrumented build: sanitizers and libFuzzer (make check-instrumented)
   time                   # /usr/bin/time -v: peak memory in the benchmarks
+  python3                # the man page from the program's help (scripts/manpage.py), the scripts
+  dpkg-dev               # dpkg-shlibdeps: the .deb's dependencies (make package)
 )
 if [[ "${1:-}" == "--with-freefem" ]]; then
   packages+=(freefem++ libfreefem++ time)   # only for bench-compare

@@ -30,7 +30,7 @@ for label in unit study; do
     ctest -j "$(nproc)" -L "$label" > "ctest-$label.log") || { echo "study-coverage: ctest -L $label failed ($build/ctest-$label.log)" >&2; exit 1; }
   "$profdata" merge -o "$build/$label.profdata" "$build/profiles-$label"/*.profraw
   "$cov" export -format=lcov -instr-profile="$build/$label.profdata" "$build/tests/fsicontact_tests" \
-    -object "$build/app/fsicontact" -object "$build/src/libfsicontact_gmsh.so" > "$build/$label.lcov" 2> /dev/null
+    -object "$build/app/fsicontact" -object "$build/lib/fsicontact/libfsicontact_gmsh.so" > "$build/$label.lcov" 2> /dev/null
 done
 
 # lcov: SF:<file>, DA:<line>,<count>, BRDA:<line>,<block>,<branch>,<count or ->.

@@ -46,7 +46,7 @@ struct GmshPlugin {
 };
 inline constexpr int kGmshPluginVersion = 1;
 
-// The plugin, loaded and Gmsh initialised on the first call; throws MeshError naming
+// The plugin, loaded and Gmsh initialised on the first call; throws SolverFailure naming
 // the library if it cannot be loaded.
 const GmshPlugin& gmsh_plugin();
 

@@ -10,6 +10,7 @@
 #include "common/timer.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
+#include "run/provenance.hpp"
 #include "run/csv.hpp"
 #include "run/outputs/output_dir.hpp"
 #include "run/setup_cache.hpp"
@@ -111,7 +112,9 @@ void begin_sweep_dir(const std::string& out_dir, std::size_t rows, const Json& h
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec) throw OutputError(out_dir, ec.value());
-  write_json((fs::path(out_dir) / "summary.json").string(), header);
+  Json marked = header;
+  marked["program"] = provenance_json();
+  write_json((fs::path(out_dir) / "summary.json").string(), marked);
   remove_stale_outputs(out_dir, "summary.json");
   std::vector<std::string> keep;
   for (std::size_t i = 0; i < rows; ++i) keep.push_back(fs::path(row_dir(out_dir, i)).filename().string());
@@ -178,8 +181,9 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
   result.table_markdown = sweep_table_markdown(rows);
   write_atomically((fs::path(result.out_dir) / "table.md").string(), [&](std::ostream& o) { o << result.table_markdown; });
   write_atomically((fs::path(result.out_dir) / "table.csv").string(), [&](std::ostream& o) { o << sweep_table_csv(rows); });
-  write_json((fs::path(result.out_dir) / "summary.json").string(),
-             sweep_summary(case_path, rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete"));
+  Json summary = sweep_summary(case_path, rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete");
+  summary["program"] = provenance_json();  // what made it (issue 31)
+  write_json((fs::path(result.out_dir) / "summary.json").string(), summary);
   return result;
 }
 

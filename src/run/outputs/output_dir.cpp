@@ -6,6 +6,7 @@
 #include "common/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
+#include "run/provenance.hpp"
 
 namespace fsi {
 
@@ -76,6 +77,7 @@ void RunOutputs::begin(Json header, std::optional<int> resumed_frames_to) {
   std::filesystem::create_directories(dir_, ec);
   if (ec) throw OutputError(dir_, ec.value());
   header["status"] = "writing";
+  header["program"] = provenance_json();
   write_json(path("summary.json"), header);  // first: the directory now says it is in flux
   remove_stale_outputs(dir_, "summary.json", resumed_frames_to.value_or(-1), resumed_frames_to.has_value());
 }
@@ -97,6 +99,7 @@ Json RunOutputs::finish(Json summary) {
     const std::string solve_failure = summary.contains("failure") ? summary["failure"].get<std::string>() + "; " : "";
     summary["failure"] = solve_failure + "writing the outputs: " + failure();
   }
+  summary["program"] = provenance_json();  // what made it (issue 31)
   write_json(path("summary.json"), summary);
   return summary;
 }
