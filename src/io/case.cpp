@@ -214,6 +214,10 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
     fail(origin, "fluid.h_near", "= " + shortest(p.h_near) + " is out of range",
          "0 (no band) or [1e-30, fluid.h = " + shortest(p.h) + "]");
   s.band("band", p.band, p.band_box);
+  p.h_obstacles = s.number("h_obstacles", p.h_obstacles, {0, kMaxMagnitude, true, true});
+  if (p.h_obstacles != 0 && !(p.h_obstacles >= kMinMagnitude && p.h_obstacles <= p.h))
+    fail(origin, "fluid.h_obstacles", "= " + shortest(p.h_obstacles) + " is out of range",
+         "0 (none) or [1e-30, fluid.h = " + shortest(p.h) + "]");
   p.method = s.choice("method", p.method, {"penalised", "body-fitted"});
   read_fluid_model(s, origin, p);
   s.reject_unknown();
@@ -456,7 +460,8 @@ namespace {
 toml::table fluid_toml(const FluidParams& f) {
   toml::table ft{{"L1", f.L1}, {"H1", f.H1}, {"H2", f.H2}, {"mu", f.mu},   {"f", load_toml(f.f, f.f_expression)},
                  {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
-                 {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near}, {"method", f.method},
+                 {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
+                 {"h_obstacles", f.h_obstacles}, {"method", f.method},
                  {"model", f.model}, {"viscous_form", f.viscous_form}, {"newton_tol", f.newton_tol},
                  {"newton_max_steps", f.newton_max_steps}};
   insert_load(ft, "Vmax", f.Vmax, f.Vmax_expression);

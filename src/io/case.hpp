@@ -107,6 +107,11 @@ struct FluidParams {
   // a Gmsh size field. 0: no band, hF everywhere (the paper's meshes).
   double h_near = 0;
   double band = 0.02;
+  // Refinement at the obstacles (the box's holes): triangles of size h_obstacles on
+  // their boundaries, growing by kBandGrowth per unit of distance up to the band's
+  // or hF (a Gmsh size field; fluid.mesher = "gmsh"). Where the forces on them are
+  // computed (the DFG benchmarks) the mesh is needed there. 0: none.
+  double h_obstacles = 0;
   std::optional<std::array<double, 4>> band_box;
   // "penalised": the fictitious domain of §3 (the paper); "body-fitted": D minus the
   // deformed structure, remeshed each fixed-point pass, no-slip on the structure and

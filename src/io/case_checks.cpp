@@ -10,6 +10,7 @@
 
 #include "io/case.hpp"
 #include "io/case_reader.hpp"
+#include "mesh/mesh_geometry.hpp"  // kBandGrowth
 #include "mesh/polygon.hpp"
 
 namespace fsi::case_detail {
@@ -94,6 +95,12 @@ struct Hole {
   std::string key;
   bool polygon() const { return !corners.empty(); }
   double area() const { return polygon() ? std::abs(signed_area(corners)) : std::numbers::pi * r * r; }
+  double perimeter() const {
+    if (!polygon()) return 2 * std::numbers::pi * r;
+    double p = 0;
+    for (std::size_t i = 0; i < corners.size(); ++i) p += (corners[(i + 1) % corners.size()] - corners[i]).norm();
+    return p;
+  }
   // The key whose value places it, and where it is, for messages.
   std::string place_key() const { return key + (polygon() ? ".points" : ".r"); }
   std::string where() const {
@@ -190,16 +197,39 @@ void check_fluid_box(const Case& c, const Origin& o) {
                                         : (s.L + 2 * f.band) * (s.H + 2 * f.band);
     estimate += 2.4 * std::min(band_area, area) / (f.h_near * f.h_near);
   }
+  if (f.h_obstacles > 0) {  // a ring per hole, the size growing from h_obstacles: ∫ 2.4 P / (h_o + g s)² ds
+    const double far = f.h_near > 0 ? std::min(f.h_near, f.h) : f.h;
+    for (const Hole& hole : holes)
+      if (f.h_obstacles < far) estimate += 2.4 * hole.perimeter() / kBandGrowth * (1 / f.h_obstacles - 1 / far);
+  }
   if (estimate > case_limits().fluid_triangles)
     fail(o, "fluid.h", "= " + shortest(f.h) + " would need about " + approx(estimate) +
                            " triangles, above the limit of " + shortest(case_limits().fluid_triangles),
          ">= " + approx(std::sqrt(2.4 * area / case_limits().fluid_triangles)) + " for this box" +
-             (f.h_near > 0 ? ", or a larger fluid.h_near or a smaller fluid.band" : ""));
+             (f.h_near > 0 ? ", or a larger fluid.h_near or a smaller fluid.band" : "") +
+             (f.h_obstacles > 0 ? ", or a larger fluid.h_obstacles" : ""));
+}
+
+// The refinement at the obstacles shapes the generated mesh, by a Gmsh size field.
+void check_fluid_obstacle_refinement(const Case& c, const Origin& o) {
+  const auto& f = *c.fluid;
+  if (!(f.h_obstacles > 0)) return;
+  if (!f.mesh.empty())
+    fail(o, "fluid.h_obstacles", "= " + shortest(f.h_obstacles) + " refines the generated mesh, but fluid.mesh is set",
+         "0 with fluid.mesh (refine the file's mesh itself)");
+  if (f.method == "body-fitted")
+    fail(o, "fluid.h_obstacles", "= " + shortest(f.h_obstacles) + " refines the fixed mesh of fluid.method = \"penalised\"",
+         "0 with fluid.method = \"body-fitted\"");
+  if (f.mesher != "gmsh")
+    fail(o, "fluid.h_obstacles", "= " + shortest(f.h_obstacles) + " is a Gmsh size field, but fluid.mesher = \"" +
+                                     f.mesher + "\"",
+         "fluid.mesher = \"gmsh\" with fluid.h_obstacles, or 0");
 }
 
 // The band refinement shapes the generated mesh, and a band box must meet D.
 void check_fluid_band(const Case& c, const Origin& o) {
   const auto& f = *c.fluid;
+  check_fluid_obstacle_refinement(c, o);
   if (!(f.h_near > 0)) return;
   if (!f.mesh.empty())
     fail(o, "fluid.h_near", "= " + shortest(f.h_near) + " refines the generated mesh, but fluid.mesh is set",

@@ -110,6 +110,7 @@ Mesh generate_structure_mesh(const StructureGeometry& g, MeshGenerator by) {
 
 Mesh generate_fluid_mesh(const FluidGeometry& g, MeshGenerator by) {
   if (by == MeshGenerator::gmsh) return gmsh_fluid_mesh(g);
+  if (g.h_holes > 0) throw MeshError("the refinement at the holes (fluid.h_obstacles) is a Gmsh size field");
   const double u = reference_length(std::max(std::abs(g.L1), std::abs(g.H1) + std::abs(g.H2)));
   SizeField size{g.h / u};
   if (g.h_near > 0)

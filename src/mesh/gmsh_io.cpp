@@ -82,7 +82,8 @@ namespace {
 // The box scaled by 1/u (Gmsh meshes in units of u), and the labels of its sides and
 // holes: Sigma_5_1, Sigma_5_2, ... for FluidGeometry::holes, else Sigma_5.
 FluidGeometry scaled_box(const FluidGeometry& g, double u, std::vector<std::string>& labels) {
-  FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u, g.h_near / u, g.band};
+  FluidGeometry scaled{g.L1 / u, g.H1 / u, g.H2 / u, g.x0 / u, g.y0 / u, g.r / u, g.h / u, g.h_near / u, g.band,
+                      g.h_holes / u};
   for (double& b : scaled.band) b /= u;
   labels = {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"};
   if (!g.holes) {

@@ -50,9 +50,8 @@ void mesh_2d(double h, MeshOptions options = {}) {
 }
 
 // The band refinement (FluidGeometry::h_near): a Box field, h_near inside the band,
-// h beyond the transition, as the only size source, so that the corners' sizes h do
-// not spread into the band and the band's size does not spread along the boundary.
-void add_band_field(const FluidGeometry& g) {
+// h beyond the transition. Its tag.
+int add_band_field(const FluidGeometry& g) {
   namespace field = gmsh::model::mesh::field;
   const int box = field::add("Box");
   field::setNumber(box, "VIn", g.h_near);
@@ -64,9 +63,7 @@ void add_band_field(const FluidGeometry& g) {
   field::setNumber(box, "ZMin", -1);
   field::setNumber(box, "ZMax", 1);
   field::setNumber(box, "Thickness", (g.h - g.h_near) / kBandGrowth);
-  field::setAsBackgroundMesh(box);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  return box;
 }
 
 void add_elements(RawMesh& raw, int dim, int entity) {
@@ -299,6 +296,50 @@ void cut_short_sides(const HoleCurves& h, double size) {
     if (!h.holes[k].corners.empty()) cut_short_sides(h.holes[k].corners, h.curves[k], size);
 }
 
+// The refinement at the holes (FluidGeometry::h_holes): the distance d to their curves
+// (a Distance field sampled at 1/4 of h_holes along them), the size h_holes + 0.2 d up
+// to h (a Threshold field). Its tag.
+int add_hole_field(const FluidGeometry& g, const HoleCurves& holes) {
+  namespace field = gmsh::model::mesh::field;
+  std::vector<double> curves;
+  double length = 0;
+  for (std::size_t k = 0; k < holes.holes.size(); ++k) {
+    for (int c : holes.curves[k]) curves.push_back(c);
+    length += holes.holes[k].corners.empty() ? 2 * M_PI * holes.holes[k].r : 0;
+    for (std::size_t i = 0; i < holes.holes[k].corners.size(); ++i)
+      length += (holes.holes[k].corners[(i + 1) % holes.holes[k].corners.size()] - holes.holes[k].corners[i]).norm();
+  }
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", curves);
+  field::setNumber(distance, "NumPointsPerCurve", std::max(20.0, std::ceil(4 * length / g.h_holes / static_cast<double>(curves.size()))));
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", g.h_holes);
+  field::setNumber(threshold, "SizeMax", g.h);
+  field::setNumber(threshold, "DistMin", 0);
+  field::setNumber(threshold, "DistMax", (g.h - g.h_holes) / kBandGrowth);
+  return threshold;
+}
+
+// The size fields, if any, as the only size source, so that the corners' sizes h do
+// not spread into the refined regions and theirs do not spread along the boundary:
+// the band's, the holes', or the smaller of the two (a Min field).
+void set_size_fields(const FluidGeometry& g, const HoleCurves& holes) {
+  namespace field = gmsh::model::mesh::field;
+  std::vector<double> fields;
+  if (g.h_near > 0) fields.push_back(add_band_field(g));
+  if (g.h_holes > 0) fields.push_back(add_hole_field(g, holes));
+  if (fields.empty()) return;
+  int size = static_cast<int>(fields[0]);
+  if (fields.size() > 1) {
+    size = field::add("Min");
+    field::setNumbers(size, "FieldsList", fields);
+  }
+  field::setAsBackgroundMesh(size);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+}
+
 // Σ5, and each hole's own group Sigma_5_k for its force (SPEC §10) when the holes are
 // [[obstacles]]'.
 void add_hole_groups(const FluidGeometry& g, const HoleCurves& h, std::vector<RawGroup>& groups) {
@@ -327,8 +368,8 @@ RawMesh mesh_fluid_in_gmsh(const FluidGeometry& g) {
   const int surface = geo::addPlaneSurface(loops);
   geo::synchronize();
   cut_short_sides(holes, h);
-  if (g.h_near > 0) add_band_field(g);
-  mesh_2d(h, g.h_near > 0 ? MeshOptions{5, 0} : MeshOptions{});
+  set_size_fields(g, holes);
+  mesh_2d(h, g.h_near > 0 || g.h_holes > 0 ? MeshOptions{5, 0} : MeshOptions{});
   std::vector<RawGroup> groups = {{2, "D", {surface}},
                                   {1, "Sigma_1", {left}},
                                   {1, "Sigma_2", {bottom}},

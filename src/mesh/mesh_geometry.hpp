@@ -38,6 +38,7 @@ struct FluidGeometry {
   double h;
   double h_near = 0;
   std::array<double, 4> band{};
+  double h_holes = 0;  // the size on the holes' boundaries, growing by kBandGrowth (Gmsh only); 0: none
   // [[obstacles]] (SPEC §9): these disks and polygons, any number, are D's holes
   // instead of the one above, labelled Sigma_5_1, Sigma_5_2, ... in this order.
   std::optional<std::vector<FluidHole>> holes = std::nullopt;

@@ -27,6 +27,7 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
     try {
       FluidGeometry g{f.L1, f.H1, f.H2, o.x0, o.y0, o.r, f.h};
       if (band) g.h_near = f.h_near, g.band = *band;
+      g.h_holes = f.h_obstacles;
       g.holes = case_holes(c);
       return generate_fluid_mesh(g, mesh_generator(f.mesher));
     } catch (const MeshError& e) {  // the geometry was validated: the generator's failure

@@ -17,6 +17,7 @@ std::vector<std::string> level_overrides(const Case& base, int i, double ratio, 
   if (base.fluid && refine != "structure") {
     sets.push_back("fluid.h=" + shortest(base.fluid->h * scale));
     if (base.fluid->h_near > 0) sets.push_back("fluid.h_near=" + shortest(base.fluid->h_near * scale));
+    if (base.fluid->h_obstacles > 0) sets.push_back("fluid.h_obstacles=" + shortest(base.fluid->h_obstacles * scale));
     const double p = base.coupling.eps_power();
     if (p > 0) sets.push_back("coupling.eps=" + shortest(base.coupling.eps * std::pow(scale, p)));
   }

@@ -32,6 +32,7 @@ std::string other_value(const std::string& key) {
                                                              {"output.png", "false"},
                                                              {"output.vtu", "false"},
                                                              {"fluid.h_near", "0.005"},
+                                                             {"fluid.h_obstacles", "0.005"},
                                                              {"fluid.method", "body-fitted"},
                                                              {"coupling.eps_rule", "h^2"},
                                                              {"contact.gap", "normal"},
@@ -78,6 +79,7 @@ std::vector<std::string> companions(const std::string& key) {
   if (key == "contact.boundary") return {"contact.gap=normal"};
   if (key == "fluid.bottom") return {"fluid.right=outflow"};  // an outflow side remains
   if (key == "fluid.model") return {"fluid.rho=1"};                 // Navier–Stokes needs its density
+  if (key == "fluid.h_obstacles") return {"fluid.mesher=gmsh"};      // a Gmsh size field
   if (key.rfind("time.", 0) == 0)  // SPEC §12: so far the fluid alone, with its density
     return {"structure.shape=none", "fluid.rho=1", "time.dt=1", "time.t_end=2"};
   return {};

@@ -43,7 +43,7 @@ Json to_json(const FluidParams& f) {
             {"chi", f.chi},
             {"factorization", f.factorization},
             {"keep_far_factors_mb", f.keep_far_factors_mb},
-            {"h_near", f.h_near},
+            {"h_near", f.h_near}, {"h_obstacles", f.h_obstacles},
             {"band", f.band_box ? Json(*f.band_box) : Json(f.band)},
             {"method", f.method},
             {"mesher", f.mesher},
