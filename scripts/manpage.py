@@ -64,7 +64,7 @@ def main():
             f".SH NAME\nfsicontact \\- {roff(summary)}\n",
             ".SH SYNOPSIS\n" + "".join(f".B fsicontact {c}\n{roff(usage(program, c))}\n.br\n" for c, _ in commands) +
             ".B fsicontact\n\\-\\-version\n",
-            ".SH DESCRIPTION\n" + roff(summary) + ". A case is a TOML file (its keys in README.md; examples in "
+            ".SH DESCRIPTION\n" + roff(summary) + ". A case is a TOML file (its keys in docs/cases.md; examples in "
             "share/fsicontact/cases of the install); results go to an output directory with summary.json.\n",
             ".SH OPTIONS\n" + items(sections(top).get("Options", []))]
     for command, description in commands:

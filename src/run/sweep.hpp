@@ -24,7 +24,7 @@ struct SweepResult {
   std::string out_dir;
   std::string table_markdown;
   // 128 + signal if interrupted; else 1 if a row failed; else 3 if a row reached its
-  // iteration limit; else 0 (README, "Exit status").
+  // iteration limit; else 0 (docs/cases.md, "Exit status").
   int exit_status() const;
 };
 

@@ -1,4 +1,4 @@
-// The files of one run in its output directory (README, "What a run writes"). The
+// The files of one run in its output directory (docs/cases.md, "What a run writes"). The
 // directory is created at the first write, after validation and the solve; it then
 // holds either one run's files or a summary.json that says "writing": begin() marks
 // it so before anything else and removes what an earlier run left there (its
