@@ -43,16 +43,18 @@ demo: program
 	@$(BUILD)/app/fsicontact run $(DEMO_CASE)
 	@echo "demo: results in $(DEMO_OUT)"
 
-# The program, its Gmsh plugin, the example cases, the docs and the man page under
+# The program, its Gmsh plugin, the Python module, the example cases, the docs and the man page under
 # PREFIX (CMakeLists.txt's install rules; the same as cmake --install build --prefix P).
 PREFIX ?= /usr/local
 install: program
+	@cmake --build $(BUILD) -j $(JOBS) --target fsicontact_python
 	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 # A Debian package of the same install under /usr (CPack, CMakeLists.txt): its
 # dependencies computed from the libraries it links (dpkg-shlibdeps). Checked by
 # scripts/check-deb.sh; install it with apt-get install ./$(BUILD)/fsicontact_*.deb.
 package: program
+	@cmake --build $(BUILD) -j $(JOBS) --target fsicontact_python
 	@cd $(BUILD) && cpack -G DEB > /dev/null && ls fsicontact_*.deb
 
 # The whole suite in Release, then its time budget (cmake/TestBudget.cmake).

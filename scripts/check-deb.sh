@@ -18,6 +18,7 @@ fail() { echo "check-deb: $deb: $*" >&2; exit 1; }
 
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for f in ./usr/bin/fsicontact ./usr/lib/fsicontact/libfsicontact_gmsh.so ./usr/share/man/man1/fsicontact.1 \
+         ./usr/lib/python3/dist-packages/fsicontact/__init__.py \
          ./usr/share/fsicontact/cases/paper-7.2.toml ./usr/share/fsicontact/cases/geo/capsule.geo \
          ./usr/share/fsicontact/cases/meshes/paper-7.1-beam.msh ./usr/share/doc/fsicontact/README.md; do
   echo "$contents" | grep -q -x -F "$f" || fail "does not hold $f"
@@ -41,6 +42,8 @@ if [ "$install" = yes ]; then
   apt-get install -y "$deb" > /dev/null || fail "apt-get install failed"
   /usr/bin/fsicontact run /usr/share/fsicontact/cases/paper-7.2.toml --out installed -q || fail "/usr/bin/fsicontact failed"
   man -w fsicontact > /dev/null 2>&1 || [ -f /usr/share/man/man1/fsicontact.1 ] || fail "no man page installed"
+  /usr/bin/python3 -c "import fsicontact; print(fsicontact.run('/usr/share/fsicontact/cases/paper-7.2.toml', out='installed-py').summary['max_displacement'])" \
+    || fail "import fsicontact failed after the install"
 fi
 echo "check-deb: $(basename "$deb") holds the program, its plugin, the cases and the man page; depends on"
 echo "  $depends"

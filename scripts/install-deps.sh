@@ -27,6 +27,8 @@ packages=(
   clang libclang-rt-14-dev # the instrumented build: sanitizers and libFuzzer (make check-instrumented)
   time                   # /usr/bin/time -v: peak memory in the benchmarks
   python3                # the man page from the program's help (scripts/manpage.py), the scripts
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  python3-matplotlib     # examples/python's plots
   dpkg-dev               # dpkg-shlibdeps: the .deb's dependencies (make package)
 )
 if [[ "${1:-}" == "--with-freefem" ]]; then

@@ -33,6 +33,9 @@ void install_interrupt_handler() {
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
+ScopedInterruptHandler::ScopedInterruptHandler() : previous_(std::signal(SIGINT, on_stop_signal)) {}
+ScopedInterruptHandler::~ScopedInterruptHandler() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
+
 bool interrupt_requested() { return g_signal != 0; }
 int interrupt_signal() { return g_signal; }
 void request_interrupt(int signal) { g_signal = signal; }

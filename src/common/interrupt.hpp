@@ -15,6 +15,20 @@ int interrupt_signal();   // the signal that asked to stop (0: none)
 void request_interrupt(int signal = 2);  // as if the signal arrived (tests)
 void clear_interrupt();
 
+// SIGINT as a request to stop for the span of one call from a host that has its own
+// handler (the Python module: Ctrl-C stops a run as it stops the program, then the
+// host's handler is back).
+class ScopedInterruptHandler {
+ public:
+  ScopedInterruptHandler();
+  ~ScopedInterruptHandler();
+  ScopedInterruptHandler(const ScopedInterruptHandler&) = delete;
+  ScopedInterruptHandler& operator=(const ScopedInterruptHandler&) = delete;
+
+ private:
+  void (*previous_)(int);
+};
+
 // The exit status of a run stopped by a signal: the shell's convention, 128 + signal
 // (130 for SIGINT, 143 for SIGTERM).
 int interrupted_exit_status();

@@ -32,7 +32,8 @@ std::string directory_of(const char* path) {
 }
 
 // The candidates, first found wins: beside the program's bin/ (../lib/fsicontact/), then
-// the same for the module holding this code, then that module's own directory.
+// for the module holding this code: the same, and the Python module's places (it lives
+// in build/python/fsicontact/ or P/lib/python3/dist-packages/fsicontact/).
 std::vector<std::string> plugin_candidates() {
   std::vector<std::string> dirs;
   if (std::string d = directory_of("/proc/self/exe"); !d.empty()) dirs.push_back(d + "/../lib/fsicontact");
@@ -40,7 +41,8 @@ std::vector<std::string> plugin_candidates() {
   if (::dladdr(reinterpret_cast<void*>(&plugin_candidates), &info) && info.dli_fname && info.dli_fname[0] == '/')
     if (std::string d = directory_of(info.dli_fname); !d.empty()) {
       dirs.push_back(d + "/../lib/fsicontact");
-      dirs.push_back(d);
+      dirs.push_back(d + "/../../lib/fsicontact");
+      dirs.push_back(d + "/../../../fsicontact");
     }
   std::vector<std::string> out;
   for (const std::string& d : dirs)

@@ -38,6 +38,14 @@ for run in generated geo msh; do
   grep -q '"program"' "$run/summary.json" || fail "$run/summary.json has no \"program\""
 done
 
+# The Python module from the moved prefix, the Gmsh plugin found from it too (a .geo case).
+if [ -d "$P/lib/python3/dist-packages/fsicontact" ]; then
+  PYTHONPATH="$P/lib/python3/dist-packages" /usr/bin/python3 -c "
+import fsicontact, sys
+r = fsicontact.run('$P/share/fsicontact/cases/capsule-against-a-wall.toml', out='$tmp/elsewhere/py')
+sys.exit(0 if r.converged and r.summary['max_displacement'] > 0 else 1)" || fail "the installed Python module failed"
+fi
+
 # Without its plugin: a failure naming where it looked (exit 1), not the build's plugin.
 rm "$P/lib/fsicontact/libfsicontact_gmsh.so"
 status=0
