@@ -209,15 +209,17 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   p.chi = s.choice("chi", p.chi, {"barycentre", "area-fraction"});
   p.factorization = s.choice("factorization", p.factorization, {"schur", "whole"});
   p.keep_far_factors_mb = s.number("keep_far_factors_mb", p.keep_far_factors_mb, kNonNegative);
-  p.h_near = s.number("h_near", p.h_near, {0, kMaxMagnitude, true, true});
-  if (p.h_near != 0 && !(p.h_near >= kMinMagnitude && p.h_near <= p.h))
-    fail(origin, "fluid.h_near", "= " + shortest(p.h_near) + " is out of range",
-         "0 (no band) or [1e-30, fluid.h = " + shortest(p.h) + "]");
+  // A refinement's size: 0 (off) or at most the far size h.
+  const auto refined_size = [&](const char* key, double value, const char* zero) {
+    value = s.number(key, value, {0, kMaxMagnitude, true, true});
+    if (value != 0 && !(value >= kMinMagnitude && value <= p.h))
+      fail(origin, std::string("fluid.") + key, "= " + shortest(value) + " is out of range",
+           std::string("0 (") + zero + ") or [1e-30, fluid.h = " + shortest(p.h) + "]");
+    return value;
+  };
+  p.h_near = refined_size("h_near", p.h_near, "no band");
   s.band("band", p.band, p.band_box);
-  p.h_obstacles = s.number("h_obstacles", p.h_obstacles, {0, kMaxMagnitude, true, true});
-  if (p.h_obstacles != 0 && !(p.h_obstacles >= kMinMagnitude && p.h_obstacles <= p.h))
-    fail(origin, "fluid.h_obstacles", "= " + shortest(p.h_obstacles) + " is out of range",
-         "0 (none) or [1e-30, fluid.h = " + shortest(p.h) + "]");
+  p.h_obstacles = refined_size("h_obstacles", p.h_obstacles, "none");
   p.method = s.choice("method", p.method, {"penalised", "body-fitted"});
   read_fluid_model(s, origin, p);
   s.reject_unknown();

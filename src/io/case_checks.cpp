@@ -10,7 +10,7 @@
 
 #include "io/case.hpp"
 #include "io/case_reader.hpp"
-#include "mesh/mesh_geometry.hpp"  // kBandGrowth
+#include "mesh/mesh_geometry.hpp"  // kBandGrowth, hole_perimeter
 #include "mesh/polygon.hpp"
 
 namespace fsi::case_detail {
@@ -95,12 +95,7 @@ struct Hole {
   std::string key;
   bool polygon() const { return !corners.empty(); }
   double area() const { return polygon() ? std::abs(signed_area(corners)) : std::numbers::pi * r * r; }
-  double perimeter() const {
-    if (!polygon()) return 2 * std::numbers::pi * r;
-    double p = 0;
-    for (std::size_t i = 0; i < corners.size(); ++i) p += (corners[(i + 1) % corners.size()] - corners[i]).norm();
-    return p;
-  }
+  double perimeter() const { return hole_perimeter(r, corners); }
   // The key whose value places it, and where it is, for messages.
   std::string place_key() const { return key + (polygon() ? ".points" : ".r"); }
   std::string where() const {

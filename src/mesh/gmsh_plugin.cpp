@@ -305,9 +305,7 @@ int add_hole_field(const FluidGeometry& g, const HoleCurves& holes) {
   double length = 0;
   for (std::size_t k = 0; k < holes.holes.size(); ++k) {
     for (int c : holes.curves[k]) curves.push_back(c);
-    length += holes.holes[k].corners.empty() ? 2 * M_PI * holes.holes[k].r : 0;
-    for (std::size_t i = 0; i < holes.holes[k].corners.size(); ++i)
-      length += (holes.holes[k].corners[(i + 1) % holes.holes[k].corners.size()] - holes.holes[k].corners[i]).norm();
+    length += hole_perimeter(holes.holes[k].r, holes.holes[k].corners);
   }
   const int distance = field::add("Distance");
   field::setNumbers(distance, "CurvesList", curves);

@@ -7,6 +7,9 @@
 #include <optional>
 #include <vector>
 
+#include <numbers>
+#include <vector>
+
 #include "mesh/mesh.hpp"
 
 namespace fsi {
@@ -25,6 +28,15 @@ struct FluidHole {
   double x0 = 0, y0 = 0, r = 0;
   std::vector<Point> corners = {};
 };
+
+// The length of a hole's boundary: the circle of radius r, or the closed polygon
+// `corners` if it has any (the refinement at the holes, its sampling and its estimate).
+inline double hole_perimeter(double r, const std::vector<Point>& corners) {
+  if (corners.empty()) return 2 * std::numbers::pi * r;
+  double length = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) length += (corners[(i + 1) % corners.size()] - corners[i]).norm();
+  return length;
+}
 
 // D = (0,L1)×(−H2,H1) minus the disk B((x0,y0),r) (or minus `holes`); labels Sigma_1
 // (left), Sigma_2 (bottom), Sigma_3 (right), Sigma_4 (top), Sigma_5 (circle; or

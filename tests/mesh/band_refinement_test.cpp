@@ -7,17 +7,13 @@
 #include <cmath>
 
 #include "mesh/generated_mesh.hpp"
+#include "support/triangle_measures.hpp"
 #include "mesh/gmsh_io.hpp"
 
 namespace fsi::band_refinement_test {
 namespace {
 
-double longest_edge(const Mesh& m, int t) {
-  const auto& T = m.triangles[t];
-  double e = 0;
-  for (int k = 0; k < 3; ++k) e = std::max(e, (m.vertices[T[k]] - m.vertices[T[(k + 1) % 3]]).norm());
-  return e;
-}
+using testing::longest_edge;
 
 // Distance from x to the box [x0, y0, x1, y1] (0 inside).
 double distance_to(const std::array<double, 4>& b, const Point& x) {

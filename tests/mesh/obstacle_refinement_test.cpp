@@ -9,16 +9,12 @@
 #include <cmath>
 
 #include "mesh/generated_mesh.hpp"
+#include "support/triangle_measures.hpp"
 
 namespace fsi::obstacle_refinement_test {
 namespace {
 
-double longest_edge(const Mesh& m, int t) {
-  const auto& T = m.triangles[t];
-  double e = 0;
-  for (int k = 0; k < 3; ++k) e = std::max(e, (m.vertices[T[k]] - m.vertices[T[(k + 1) % 3]]).norm());
-  return e;
-}
+using testing::longest_edge;
 
 FluidGeometry channel(double h_holes, double h_near = 0) {
   FluidGeometry g{2.2, 0.41, 0.0, 0.2, 0.2, 0.05, 0.04};
