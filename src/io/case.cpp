@@ -433,6 +433,16 @@ Case load_case_text(const std::string& text, const std::string& origin_name, con
   return read_with_overrides(root, origin, "", /*has_fluid_default=*/false, overrides, out_dir);
 }
 
+CaseSource CaseSource::text_named(std::string toml_text, std::string origin) {
+  CaseSource s(std::move(origin));
+  s.text = std::move(toml_text);
+  return s;
+}
+
+Case CaseSource::load(const std::vector<std::string>& overrides, const std::string& out_dir) const {
+  return text ? load_case_text(*text, path, overrides, out_dir) : load_case(path, overrides, out_dir);
+}
+
 int layer_sampling(double h_S, double layer) {
   const double m = std::ceil(h_S / layer * (1 - 1e-12));  // h_S = 3 layers exactly: 3, not 4
   return static_cast<int>(std::clamp(m, 1.0, 8.0));

@@ -229,6 +229,20 @@ Case load_case(const std::string& path, const std::vector<std::string>& override
 Case load_case_text(const std::string& text, const std::string& origin,
                     const std::vector<std::string>& overrides = {}, const std::string& out_dir = "");
 
+// Where a study's cases come from (sweep's rows, converge's levels, each loaded with its
+// own overrides): a case file's path (empty: the built-in §7.2 case), implicitly, or
+// TOML text (the Python module's dict) named by `origin`.
+struct CaseSource {
+  CaseSource(std::string case_path = "") : path(std::move(case_path)) {}  // NOLINT: a path is a source
+  static CaseSource text_named(std::string toml_text, std::string origin);
+  // The file, or the text's origin: what messages and summaries name.
+  const std::string& name() const { return path; }
+  Case load(const std::vector<std::string>& overrides = {}, const std::string& out_dir = "") const;
+
+  std::string path;                 // the file, or the text's origin
+  std::optional<std::string> text;  // TOML text instead of a file
+};
+
 // The p of coupling.eps_rule "h^p" (0 for "fixed", 2 for "layer"); none if the rule is not known.
 std::optional<double> eps_rule_power(const std::string& rule);
 

@@ -17,6 +17,7 @@
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
 #include "mesh/mesh_error.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/coupling_outputs.hpp"
 #include "run/outputs/fluid_outputs.hpp"
 #include "run/case_fields.hpp"
@@ -125,6 +126,14 @@ class BodyFittedProblem : public FluidStructureProblem {
     r.report = report(m);
     if (!result_.failure.empty()) r.report += " Failed: " + result_.failure + ".";
     if (!m.convergence_warning.empty()) r.report += " Warning: " + m.convergence_warning + ".";
+  }
+
+  // The last pass's fluid on its own mesh (χ = 0: the structure is a hole in it).
+  void final_fields(FinalFields& out) const override {
+    if (s_ && result_.structure.u.size() == 2L * s_->mesh().num_vertices())
+      out.structure = structure_arrays(*s_, result_.structure);
+    if (last_)
+      out.fluid = fluid_arrays(*last_->mesh, last_->solution, Eigen::VectorXd::Zero(last_->mesh->num_triangles()));
   }
 
   void write(RunOutputs& out) override {

@@ -8,6 +8,7 @@
 #include "common/fault.hpp"
 #include "io/atomic_file.hpp"
 #include "solid/contact_gap.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/output_dir.hpp"
 #include "run/problem_kinds.hpp"
 #include "fem/probes.hpp"
@@ -91,6 +92,10 @@ class ContactProblem final : public Problem {
     j["kkt"] = to_json(solution_.qp.kkt);
     if (c_.structure.model != "linear") j["newton"] = newton_json(solution_.newton);
     r.report = contact_report(c_, stats_, s_, solution_, *m.contact, m.displacement->max, m.displacement->min_y);
+  }
+
+  void final_fields(FinalFields& out) const override {
+    if (solution_.u.size() == 2L * s_.mesh().num_vertices()) out.structure = structure_arrays(s_, solution_);
   }
 
   void write(RunOutputs& out) override {

@@ -8,6 +8,7 @@
 #include "common/fault.hpp"
 #include "common/format.hpp"
 #include "common/timer.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/fluid_outputs.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/outputs/obstacle_forces.hpp"
@@ -77,6 +78,10 @@ class FluidProblem final : public Problem {
     j["fluid"].update(flow_json(c_));
     r.report = failure_.empty() ? fluid_report(c_, *f_->stokes, stats_, j["obstacles"])
                                 : c_.name + ": failed: " + failure_;
+  }
+
+  void final_fields(FinalFields& out) const override {
+    if (fluid_) out.fluid = fluid_arrays(*f_->mesh, *fluid_, f_->stokes->last_solution_chi());
   }
 
   void write(RunOutputs& out) override {

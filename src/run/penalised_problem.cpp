@@ -1,5 +1,7 @@
 #include "run/penalised_problem.hpp"
 
+#include "run/outputs/field_arrays.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -97,7 +99,7 @@ FluidForce PenalisedProblem::fluid_force() const {
 }
 
 void PenalisedProblem::complete_fluid() {
-  if (!(c_.output.png || c_.output.vtu) || !f_->stokes->has_solution()) return;
+  if (!(c_.output.png || c_.output.vtu || options_.keep_fields) || !f_->stokes->has_solution()) return;
   try {
     fluid_ = &f_->stokes->solution();
   } catch (const SolverFailure& e) {
@@ -170,6 +172,11 @@ void PenalisedProblem::write(RunOutputs& out) {
   write_structure(out, fluid_vtu);
   write_case_toml(out, c_);
   if (png_.valid()) out.write(picture_name(), [&](const std::string& p) { write_file_atomically(p, png_.get()); });
+}
+
+void PenalisedProblem::final_fields(FinalFields& out) const {
+  if (s_ && result_.structure.u.size() == 2L * s_->mesh().num_vertices()) out.structure = structure_arrays(*s_, result_.structure);
+  if (fluid_) out.fluid = fluid_arrays(*f_->mesh, *fluid_, f_->stokes->last_solution_chi());
 }
 
 }  // namespace fsi

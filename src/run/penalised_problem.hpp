@@ -28,6 +28,7 @@ class PenalisedProblem : public FluidStructureProblem {
   void measure(RunResult& r) override;
   void summarise(RunResult& r) override;
   void write(RunOutputs& out) override;
+  void final_fields(FinalFields& out) const override;
 
  protected:
   // The vertices drawn in red on the velocity picture (the contact zone).

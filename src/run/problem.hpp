@@ -26,6 +26,7 @@ namespace fsi {
 
 struct RunOptions;
 struct RunResult;
+struct FinalFields;
 class RunOutputs;
 
 class Problem {
@@ -47,6 +48,10 @@ class Problem {
   // The files beside summary.json (fields, pictures, history.csv, case.toml); a failed
   // write is recorded by `out`, not thrown.
   virtual void write(RunOutputs& out) = 0;
+  // The final state's fields as arrays (run/outputs/field_arrays.hpp), what write()'s
+  // structure.vtu and fluid.vtu hold, asked for after write() when
+  // RunOptions::keep_fields (the Python module's Result.structure and .fluid).
+  virtual void final_fields(FinalFields& /*out*/) const {}
 
   // Whether it writes during solve() (a time run): run() then opens the directory
   // after set_up() and calls open() before solve().

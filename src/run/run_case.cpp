@@ -63,7 +63,7 @@ void write_outputs(Problem& problem, const Case& c, RunResult& r, PhaseTimes& ti
   if (out.failed()) fail_writing(r, out.failure());
 }
 
-RunResult run_steps(Problem& problem, const Case& c) {
+RunResult run_steps(Problem& problem, const Case& c, bool keep_fields) {
   PhaseTimes times;
   const Stopwatch total;
   problem.set_up(times);
@@ -78,6 +78,13 @@ RunResult run_steps(Problem& problem, const Case& c) {
   problem.measure(r);
   problem.summarise(r);
   write_outputs(problem, c, r, times, total, streamed ? &*streamed : nullptr);
+  if (keep_fields) {
+    try {
+      problem.final_fields(r.fields);
+    } catch (const std::bad_alloc&) {
+      r.fields = {};  // the run and its files stand; its arrays are an extra it cannot afford
+    }
+  }
   return r;
 }
 
@@ -91,9 +98,9 @@ Json summary_header(const Case& c, const char* kind) {
   return j;
 }
 
-RunResult run(Problem& problem, const Case& c) {
+RunResult run(Problem& problem, const Case& c, bool keep_fields) {
   try {
-    return run_steps(problem, c);
+    return run_steps(problem, c, keep_fields);
   } catch (const InputError&) {
     throw;  // found before anything was written
   } catch (const SolverFailure& e) {
@@ -120,7 +127,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (!c.time) throw InputError("--resume " + options.resume_dir + ": " + c.source + " has no [time] section to resume");
     problem->resume(read_resume_checkpoint(options.resume_dir, c, problem->kind()));
   }
-  return run(*problem, c);
+  return run(*problem, c, options.keep_fields);
 }
 
 }  // namespace fsi

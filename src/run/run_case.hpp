@@ -9,6 +9,7 @@
 #include "common/timer.hpp"
 #include "io/case.hpp"
 #include "run/problem.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/run_measures.hpp"
 #include "run/outputs/summary.hpp"
 
@@ -24,6 +25,9 @@ struct RunOptions {
   // A time run continued from this directory's checkpoint (`fsicontact run --resume`);
   // empty: from t = 0. The case's output.dir must be this directory.
   std::string resume_dir;
+  // RunResult::fields filled (the Python module); the fluid is then completed beyond
+  // the region a substructured solve left exact, as for fluid.vtu.
+  bool keep_fields = false;
 };
 
 struct RunResult {
@@ -35,17 +39,20 @@ struct RunResult {
   std::string report;   // a paragraph for the user (the numbers, even after a failure)
   std::string failure;  // exit status 1: what failed, naming the phase
   Eigen::VectorXd displacement;  // the final ũ (2nv; empty if none): a restart's u⁰
+  FinalFields fields;            // RunOptions::keep_fields: the final state's fields
 };
 
 // Checks the output directory and the meshes against the case (InputError, exit 2:
-// nothing is written), then solves and writes: run(*make_problem(c, options), c).
+// nothing is written), then solves and writes: run(*make_problem(c, options), c,
+// options.keep_fields).
 RunResult run_case(const Case& c, const RunOptions& options);
 
 // set_up → solve → measure → summarise → write (run/problem.hpp), each phase timed;
 // summary.json's "timing_s" holds them. A failure after validation never escapes as
 // an exception: summary.json says "status": "failed" with the message (and the last
 // good state where there is one) and the result has exit status 1.
-RunResult run(Problem& problem, const Case& c);
+// keep_fields: r.fields from Problem::final_fields after the files are written.
+RunResult run(Problem& problem, const Case& c, bool keep_fields = false);
 
 // summary.json's first keys: name, problem (Problem::kind), parameters.
 Json summary_header(const Case& c, const char* kind);

@@ -52,7 +52,7 @@ std::string row_dir(const std::string& out_dir, std::size_t i) {
 
 // The rows' cases, validated: the sweep's defaults (no pictures unless
 // --keep-outputs) first, so that a row's own output.png / output.vtu wins.
-std::vector<SweepRow> read_rows(const std::string& case_path, const CsvTable& csv, const std::string& rows_csv,
+std::vector<SweepRow> read_rows(const CaseSource& source, const CsvTable& csv, const std::string& rows_csv,
                                 const SweepOptions& options, const std::string& out_dir) {
   std::vector<SweepRow> rows;
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
@@ -67,7 +67,7 @@ std::vector<SweepRow> read_rows(const std::string& case_path, const CsvTable& cs
       else if (!value.empty()) sets.push_back(key + "=" + value);
     }
     try {
-      row.c = load_case(case_path, sets, row_dir(out_dir, i));
+      row.c = source.load(sets, row_dir(out_dir, i));
     } catch (const InputError& e) {
       throw InputError(rows_csv + ": row " + std::to_string(i + 1) + " (line " + std::to_string(csv.line_of_row[i]) +
                        "): " + e.what());
@@ -139,20 +139,20 @@ int SweepResult::exit_status() const {
   return not_converged ? 3 : 0;
 }
 
-SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv, const SweepOptions& options) {
+SweepResult run_sweep(const CaseSource& source, const std::string& rows_csv, const SweepOptions& options) {
   const CsvTable csv = read_csv(rows_csv);
   check_header(csv, rows_csv);
-  const Case base = load_case(case_path, options.overrides);
+  const Case base = source.load(options.overrides);
   SweepResult result;
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-sweep" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
-  std::vector<SweepRow> rows = read_rows(case_path, csv, rows_csv, options, result.out_dir);
+  std::vector<SweepRow> rows = read_rows(source, csv, rows_csv, options, result.out_dir);
   SetupCache cache;
   check_row_meshes(rows, cache, rows_csv);
 
   // Nothing was written so far. Rows run grouped by fluid mesh (each mesh and its
   // setup built once) and are reported in the file's order.
-  begin_sweep_dir(result.out_dir, rows.size(), sweep_summary(case_path, rows_csv, rows, result, "writing"));
+  begin_sweep_dir(result.out_dir, rows.size(), sweep_summary(source.name(), rows_csv, rows, result, "writing"));
   std::vector<std::size_t> order(rows.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -168,6 +168,7 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
     const Stopwatch clock;
     RunOptions run_options;
     run_options.cache = &cache;
+    run_options.keep_fields = options.keep_fields;
     const std::string prefix = "[row " + std::to_string(i + 1) + "] ";
     if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
     const RunResult r = run_case(rows[i].c, run_options);
@@ -176,12 +177,13 @@ SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv,
     rows[i].wall_s = clock.elapsed();
     ++result.rows;
     if (options.progress) options.progress(prefix + (r.exit_status == 1 ? rows[i].status : r.report));
+    if (options.on_row) options.on_row(i, rows[i].c.output.dir, r);
   }
 
   result.table_markdown = sweep_table_markdown(rows);
   write_atomically((fs::path(result.out_dir) / "table.md").string(), [&](std::ostream& o) { o << result.table_markdown; });
   write_atomically((fs::path(result.out_dir) / "table.csv").string(), [&](std::ostream& o) { o << sweep_table_csv(rows); });
-  Json summary = sweep_summary(case_path, rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete");
+  Json summary = sweep_summary(source.name(), rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete");
   summary["program"] = provenance_json();  // what made it (issue 31)
   write_json((fs::path(result.out_dir) / "summary.json").string(), summary);
   return result;

@@ -16,6 +16,10 @@ struct SweepOptions {
   std::string out_dir;                 // default out/<case name>-sweep
   bool keep_outputs = false;           // per-row .vtu/.png (off: summary and history only)
   std::function<void(const std::string&)> progress;
+  // Each row's result as it ends (its index in the file's order, its directory), with
+  // its final fields if keep_fields (the Python module's sweep).
+  std::function<void(std::size_t row, const std::string& dir, const RunResult&)> on_row;
+  bool keep_fields = false;
 };
 
 struct SweepResult {
@@ -32,6 +36,6 @@ struct SweepResult {
 // row), every row's case, the output directory and every row's meshes (InputError
 // naming the file and row: nothing written). Then runs the rows, each writing its
 // own directory row-NN, and writes table.md, table.csv and the sweep's summary.json.
-SweepResult run_sweep(const std::string& case_path, const std::string& rows_csv, const SweepOptions& options);
+SweepResult run_sweep(const CaseSource& source, const std::string& rows_csv, const SweepOptions& options);
 
 }  // namespace fsi

@@ -21,6 +21,7 @@
 #include "fluid/fluid_time_stepper.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/outputs/animation.hpp"
@@ -145,6 +146,10 @@ class TimeFluidProblem final : public Problem {
                   shortest(stepper_ ? stepper_->time() : 0.0).c_str(), stats_.triangles);
     r.report = std::string(text) + (failure_.empty() ? "" : " Failed at " + failure_ + ".") +
                (interrupted_ ? " Interrupted." : "") + " Results in " + c_.output.dir + "/.";
+  }
+
+  void final_fields(FinalFields& out) const override {
+    if (stepper_) out.fluid = fluid_arrays(*f_.mesh, stepper_->state(), chi());
   }
 
   void write(RunOutputs& out) override {

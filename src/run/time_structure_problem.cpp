@@ -19,6 +19,7 @@
 #include "common/interrupt.hpp"
 #include "fem/probes.hpp"
 #include "io/vtu.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/animation.hpp"
 #include "run/outputs/frame_series.hpp"
 #include "run/outputs/output_dir.hpp"
@@ -121,6 +122,10 @@ class TimeStructureProblem final : public Problem {
                   j["energy"]["max_relative_drift"].get<double>());
     r.report = std::string(text) + (failure_.empty() ? "" : " Failed at " + failure_ + ".") +
                (interrupted_ ? " Interrupted." : "") + " Results in " + c_.output.dir + "/.";
+  }
+
+  void final_fields(FinalFields& out) const override {
+    if (state_.contact.u.size() == 2L * s_.mesh().num_vertices()) out.structure = structure_arrays(s_, state_.contact);
   }
 
   void write(RunOutputs& out) override {

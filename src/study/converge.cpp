@@ -84,9 +84,12 @@ void run_one(LevelRun& run, SetupCache& cache, const ConvergeOptions& options, c
   run_options.initial_displacement = start;
   if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
   const Stopwatch clock;
+  run_options.keep_fields = options.keep_fields && options.on_run;
   run.result = run_case(run.spec.c, run_options);
   run.wall_s = clock.elapsed();
   run.status = status_of(run.result);
+  if (options.on_run) options.on_run(run.spec.c.output.dir, run.result);
+  run.result.fields = {};
 }
 
 // Runs the levels coarsest first, each level's schemes together (they share its meshes
@@ -180,9 +183,9 @@ std::vector<std::string> with_default_eps_rule(const Case& base, std::vector<std
 
 }  // namespace
 
-ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptions& options) {
+ConvergeResult run_convergence(const CaseSource& source, const ConvergeOptions& options) {
   check_options(options);
-  const Case base = load_case(case_path, options.overrides);
+  const Case base = source.load(options.overrides);
   if (options.refine == "fluid" && !base.fluid)
     throw InputError("--refine fluid: " + base.source + " has no fluid to refine; allowed: all or structure");
   // structure.shape = "none": the fluid alone, its quantities the obstacles' forces
@@ -191,7 +194,7 @@ ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptio
   result.out_dir = options.out_dir.empty() ? "out/" + base.name + "-converge" : options.out_dir;
   check_output_dir(result.out_dir, options.out_dir.empty() ? base.source + " (name)" : "--out");
   const std::vector<std::string> overrides = with_default_eps_rule(base, options.overrides, options);
-  std::vector<LevelSpec> specs = make_levels(case_path, overrides, options.levels, options.ratio,
+  std::vector<LevelSpec> specs = make_levels(source, overrides, options.levels, options.ratio,
                                              options.schemes, result.out_dir, options.refine);
   std::stable_sort(specs.begin(), specs.end(), [](const LevelSpec& a, const LevelSpec& b) { return a.index < b.index; });
   SetupCache cache;

@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "io/case.hpp"
 #include "run/outputs/summary.hpp"
+#include "run/run_case.hpp"
 
 namespace fsi {
 
@@ -23,6 +25,11 @@ struct ConvergeOptions {
   std::vector<std::string> schemes;
   std::string refine = "all";          // "all" | "fluid" | "structure" (study/levels.hpp)
   std::function<void(const std::string&)> progress;
+  // Each run of the study as it ends, with its directory (<out>/level-2,
+  // level-1-aitken, level-3-eps), with its final fields if keep_fields (the Python
+  // module's converge; the study keeps no fields itself).
+  std::function<void(const std::string& dir, const RunResult&)> on_run;
+  bool keep_fields = false;
 };
 
 struct ConvergeResult {
@@ -35,6 +42,6 @@ struct ConvergeResult {
 // Validates everything first (the options, every level's case and meshes: InputError,
 // nothing written), then runs the levels coarsest first, each in <out>/level-i, and
 // writes <out>/convergence.{csv,md,png} and <out>/summary.json.
-ConvergeResult run_convergence(const std::string& case_path, const ConvergeOptions& options);
+ConvergeResult run_convergence(const CaseSource& source, const ConvergeOptions& options);
 
 }  // namespace fsi

@@ -26,10 +26,10 @@ std::vector<std::string> level_overrides(const Case& base, int i, double ratio, 
 
 }  // namespace
 
-std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vector<std::string>& overrides,
+std::vector<LevelSpec> make_levels(const CaseSource& source, const std::vector<std::string>& overrides,
                                    int levels, double ratio, const std::vector<std::string>& schemes,
                                    const std::string& out_dir, const std::string& refine) {
-  const Case base = load_case(case_path, overrides);
+  const Case base = source.load(overrides);
   std::vector<std::string> runs = schemes;
   if (runs.empty()) runs.push_back(base.coupling.scheme);
   std::vector<LevelSpec> specs;
@@ -44,7 +44,7 @@ std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vect
       const std::string dir = "level-" + std::to_string(i + 1) + (s == 0 ? "" : "-" + runs[s]);
       LevelSpec spec{i + 1, runs[s], {}};
       try {
-        spec.c = load_case(case_path, sets, (std::filesystem::path(out_dir) / dir).string());
+        spec.c = source.load(sets, (std::filesystem::path(out_dir) / dir).string());
       } catch (const InputError& e) {
         throw InputError("level " + std::to_string(i + 1) + " (sizes / " + shortest(std::pow(ratio, i)) +
                          "): " + e.what());

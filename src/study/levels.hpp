@@ -23,7 +23,7 @@ struct LevelSpec {
 // Levels 1…n for each scheme (the first scheme is the study's own; empty: the case's
 // scheme only). Throws InputError naming the level for a level the case loader
 // refuses (a size beyond the limits, say).
-std::vector<LevelSpec> make_levels(const std::string& case_path, const std::vector<std::string>& overrides,
+std::vector<LevelSpec> make_levels(const CaseSource& source, const std::vector<std::string>& overrides,
                                    int levels, double ratio, const std::vector<std::string>& schemes,
                                    const std::string& out_dir, const std::string& refine = "all");
 

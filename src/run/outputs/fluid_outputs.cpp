@@ -8,6 +8,7 @@
 #include "fem/point_locator.hpp"
 #include "fluid/fluid_field.hpp"
 #include "io/vtu.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/outputs/structure_outputs.hpp"
 
@@ -15,11 +16,7 @@ namespace fsi {
 
 void write_fluid_vtu(const std::string& path, const Case& c, const Mesh& mesh,
                      const FluidSolution& s, const Eigen::VectorXd& chi) {
-  const Eigen::VectorXd magnitude = (s.v1.array().square() + s.v2.array().square()).sqrt();
-  write_vtu(path, mesh,
-            {vector_field("velocity", s.v1, s.v2), scalar_field("velocity_magnitude", magnitude),
-             scalar_field("pressure", s.p), scalar_field("chi", chi, true)},
-            vtu_format(c.output.vtu_format));
+  write_vtu(path, mesh, fluid_arrays(mesh, s, chi).fields, vtu_format(c.output.vtu_format));
 }
 
 namespace {

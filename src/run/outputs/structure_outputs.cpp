@@ -6,7 +6,7 @@
 
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
-#include "solid/stress.hpp"
+#include "run/outputs/field_arrays.hpp"
 
 namespace fsi {
 namespace {
@@ -67,28 +67,19 @@ std::vector<std::vector<Point>> obstacle_outlines(const Case& c, const WorldBox&
 
 void write_structure_vtu(const std::string& path, const Case& c, const StructureSetup& s,
                          const ContactSolution& solution, bool deformed) {
-  const Mesh& ref = s.mesh();
-  const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);
-  Eigen::VectorXd multiplier = Eigen::VectorXd::Zero(ref.num_vertices());
-  Eigen::VectorXd status = Eigen::VectorXd::Zero(ref.num_vertices());
-  const auto& rows = s.solver->contact().row_vertex;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    multiplier[rows[i]] = solution.qp.alpha[static_cast<Eigen::Index>(i)];
-    status[rows[i]] = solution.qp.active[i] ? 1.0 : 0.0;
-  }
-  Eigen::VectorXd magnitude = (u1.array().square() + u2.array().square()).sqrt();
-  const Mesh points = deformed ? displaced(ref, u1, u2) : ref;
-  std::vector<VtuField> fields{vector_field("displacement", u1, u2), scalar_field("displacement_magnitude", magnitude),
-                               scalar_field("contact_multiplier", multiplier), scalar_field("contact_status", status)};
-  if (const P2Space* p2 = s.p2()) {  // the P2 elements as VTK's quadratic triangles on the nodes
-    std::vector<std::array<int, 6>> cells;
-    for (int t = 0; t < p2->mesh().num_triangles(); ++t) cells.push_back(p2->element(t));
-    fields.push_back(scalar_field("von_mises", von_mises(*p2, s.lame, solution.u), true));
-    write_quadratic_vtu(path, points.vertices, cells, fields, vtu_format(c.output.vtu_format));
+  const FieldArrays a = structure_arrays(s, solution);
+  const VtuFormat format = vtu_format(c.output.vtu_format);
+  const std::vector<Point>& nodes = deformed ? a.deformed : a.vertices;
+  if (s.p2()) {  // the P2 elements as VTK's quadratic triangles on the nodes
+    std::vector<std::array<int, 6>> cells(a.cells.rows());
+    for (Eigen::Index t = 0; t < a.cells.rows(); ++t)
+      for (int k = 0; k < 6; ++k) cells[t][k] = a.cells(t, k);
+    write_quadratic_vtu(path, nodes, cells, a.fields, format);
     return;
   }
-  fields.push_back(scalar_field("von_mises", von_mises(ref, s.lame, solution.u), true));
-  write_vtu(path, points, fields, vtu_format(c.output.vtu_format));
+  Mesh points = s.mesh();
+  points.vertices = nodes;
+  write_vtu(path, points, a.fields, format);
 }
 
 namespace {
