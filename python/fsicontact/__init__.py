@@ -137,7 +137,7 @@ def run(case: Union[str, os.PathLike, Mapping[str, Any], None] = None, set: Opti
     return Result(native)
 
 
-def _sets_and_out(set: Optional[Mapping[str, Any]], out: Union[str, os.PathLike, None], make_out: bool = True):
+def _sets_and_out(set: Optional[Mapping[str, Any]], out: Union[str, os.PathLike, None]):
     if set is not None and not isinstance(set, Mapping):
         raise InputError(f"set: expected a dict {{'section.key': value}}, not {type(set).__name__}")
     sets = []
@@ -146,7 +146,7 @@ def _sets_and_out(set: Optional[Mapping[str, Any]], out: Union[str, os.PathLike,
             raise InputError(f"set: the key {key!r} is not a string 'section.key'")
         sets.append(f"{key}={_set_value(value, 'set ' + key)}")
     if out is None:
-        out = tempfile.mkdtemp(prefix="fsicontact-") if make_out else ""
+        out = tempfile.mkdtemp(prefix="fsicontact-")
     elif not isinstance(out, (str, os.PathLike)):
         raise InputError(f"out: expected a directory path, not {type(out).__name__}")
     return sets, os.fspath(out)
