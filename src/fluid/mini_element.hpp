@@ -14,6 +14,7 @@
 
 #include "fem/p1.hpp"
 #include "fem/quadrature.hpp"
+#include "fluid/viscous_form.hpp"
 
 namespace fsi {
 
@@ -72,11 +73,6 @@ class ElementTerm {
   // none by default.
   virtual void add_load(int /*t*/, const P1Triangle& /*T*/, ElementLoad& /*load*/) const {}
 };
-
-// Which bilinear form the viscous term takes (SPEC §10 fluid.viscous_form): the
-// symmetric 2μ ε:ε of the paper (traction-free outflow σn = 0) or the gradient μ∇:∇
-// (the "do-nothing" outflow μ∂_n v − p n = 0 of the DFG benchmarks).
-enum class ViscousForm { symmetric, gradient };
 
 // The Stokes terms with the penalty κ: viscous (in `form`), divergence, mass.
 MiniLocal mini_local(const P1Triangle& T, double mu, double kappa, ViscousForm form = ViscousForm::symmetric);

@@ -179,6 +179,7 @@ void read_fluid_model(Section& s, const Origin& origin, FluidParams& p) {
   p.newton_tol = s.number("newton_tol", p.newton_tol, {1e-15, 1e-2, true, true});
   p.newton_max_steps = s.integer("newton_max_steps", p.newton_max_steps, 1, 1000);
   p.viscous_form = s.choice("viscous_form", p.viscous_form, {"symmetric", "gradient"});
+  p.element = s.choice("element", p.element, {"mini", "taylor-hood"});
   if (!p.navier_stokes()) return;
   if (p.rho == 0)
     fail(origin, "fluid.rho", "is required with fluid.model = \"navier-stokes\"", "a density in [1e-30, 1e30] kg/m³");
@@ -474,7 +475,7 @@ toml::table fluid_toml(const FluidParams& f) {
                  {"h", f.h}, {"chi", f.chi}, {"factorization", f.factorization},
                  {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
                  {"h_obstacles", f.h_obstacles}, {"method", f.method},
-                 {"model", f.model}, {"viscous_form", f.viscous_form}, {"newton_tol", f.newton_tol},
+                 {"model", f.model}, {"viscous_form", f.viscous_form}, {"element", f.element}, {"newton_tol", f.newton_tol},
                  {"newton_max_steps", f.newton_max_steps}};
   insert_load(ft, "Vmax", f.Vmax, f.Vmax_expression);
   if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given

@@ -126,6 +126,11 @@ struct FluidParams {
   double newton_tol = 1e-10;
   int newton_max_steps = 30;
   std::string viscous_form = "symmetric";
+  // The fluid's element: "mini" (P1 + bubble / P1, §4, the paper's) or "taylor-hood"
+  // (P2 / P1, isoparametric on the disks' holes: second order in H¹; the fluid alone,
+  // structure.shape = "none", so far).
+  std::string element = "mini";
+  bool taylor_hood() const { return element == "taylor-hood"; }
   bool navier_stokes() const { return model == "navier-stokes"; }
   double size_near() const { return h_near > 0 ? h_near : h; }  // the size at the structure
 };

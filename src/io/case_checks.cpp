@@ -384,6 +384,9 @@ void check_time(const Case& c, const Origin& origin) {
   if (c.fluid->rho == 0)
     fail(origin, "fluid.rho", "is required with [time] (the fluid's inertia ρ ∂v/∂t)",
          "a density in [1e-30, 1e30] kg/m³");
+  if (c.fluid->taylor_hood() && c.fluid->navier_stokes() && c.time->convection != "implicit")
+    fail(origin, "time.convection", "= \"" + c.time->convection + "\" is the mini element's; fluid.element = "
+         "\"taylor-hood\" takes Newton's method in every step", "\"implicit\" with fluid.element = \"taylor-hood\"");
 }
 
 void check_case(const Case& c, const Origin& origin) {
@@ -413,6 +416,9 @@ void check_case(const Case& c, const Origin& origin) {
   }
   check_contact_gap(c, origin);
   if (!c.fluid) return;
+  if (c.fluid->taylor_hood())  // the coupling's χ, penalty and transfers are the mini element's
+    fail(origin, "fluid.element", "= \"taylor-hood\" solves the fluid alone so far, and this case has a structure",
+         "\"mini\" with a structure, \"taylor-hood\" with structure.shape = \"none\"");
   if (rectangle) check_structure_in_box(c, origin);
   check_fluid_sides(c, origin);
   check_fluid_method(c, origin);

@@ -201,6 +201,7 @@ Json flow_json(const Case& c) {
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
   Json j = {{"method", "penalised"},  // fluid.method (run/body_fitted_problem.cpp writes the other)
+            {"element", "mini"},      // fluid.element (run/taylor_hood_setup.cpp writes the other)
             {"unknowns", stokes.unknowns()},
             {"nonzeros", stokes.nonzeros()},
             {"solver", stokes.solver_name()},

@@ -1,5 +1,6 @@
 // [time] with structure.shape = "none" (SPEC §12): the fluid alone marched in time on
-// its fixed mesh from rest, BDF1 or BDF2 (FluidTimeStepper), Stokes or Navier–Stokes,
+// its fixed mesh from rest, BDF1 or BDF2 (FluidMarch: the mini element's
+// FluidTimeStepper or Taylor–Hood's TaylorHoodFlow), Stokes or Navier–Stokes,
 // the inflow fluid.Vmax and the body force fluid.f evaluated at each new time. Each
 // step's forces on the obstacles by the residual method with the step's ρ∂v/∂t
 // (MomentumModel::inertia). Outputs: history.csv (one line per step), the frames
@@ -18,10 +19,10 @@
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
-#include "fluid/fluid_time_stepper.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtu.hpp"
 #include "run/outputs/field_arrays.hpp"
+#include "run/fluid_march.hpp"
 #include "run/fluid_setup.hpp"
 #include "run/mesh_checks.hpp"
 #include "run/outputs/animation.hpp"
@@ -45,7 +46,7 @@ struct StepRow {
   std::vector<Point> forces;  // per obstacle
 };
 
-double max_speed(const FluidSolution& s) {
+double max_speed(const FluidSolution& s) {  // at the vertices
   return std::sqrt((s.v1.array().square() + s.v2.array().square()).maxCoeff());
 }
 
@@ -63,61 +64,47 @@ class TimeFluidProblem final : public Problem {
   void set_up(PhaseTimes& times) override {
     Mesh mesh = in_phase(times, "mesh", [&] { return make_fluid_mesh(c_); });
     stats_ = statistics(mesh);
-    f_ = in_phase(times, "fluid", [&] { return make_fluid(c_, std::move(mesh), c_.coupling.eps); });
+    march_ = in_phase(times, "fluid", [&] { return make_fluid_march(c_, std::move(mesh)); });
     if (const Checkpoint* k = run_.resumed()) restore(*k);  // checked before anything is written
   }
 
   void solve(PhaseTimes& times) override {
     ScopedPhase phase(times, "fluid");
-    const Mesh& mesh = *f_.mesh;
-    PenalisedStokes& fluid = *f_.stokes;
-    fluid.set_chi(Eigen::VectorXd::Zero(mesh.num_triangles()));  // no structure
-    const auto data = [&](double t) {
-      fluid.set_body_force(fluid_body_force(*c_.fluid, t));
-      fluid.set_boundary_data(box_boundary_conditions(mesh, *c_.fluid, t));
-    };
-    // The steady flow for the data at t = 0 first (time.start_from = "steady"), before
-    // the stepper adds the time derivative to the operator.
-    const FluidSolution initial = time_.start_from == "steady" && !restored_ ? steady_flow(data) : fluid_at_rest(mesh);
-    stepper_ = std::make_unique<FluidTimeStepper>(fluid, c_.fluid->rho, time_scheme(time_), time_.dt, initial);
-    if (restored_) {
-      stepper_->restore(restored_->step, restored_->v_n, restored_->v_nm1);
-      if (restored_->step > 0) fluid.start_from(restored_->v_n);  // Newton's next start
-      restored_.reset();
-    } else {
-      add_frame();
-    }
+    const bool resumed = run_.resumed() != nullptr;
+    march_->start(time_.start_from == "steady");
+    started_ = true;
+    if (!resumed) add_frame();
     const int steps = time_.steps();
-    progress_.start_after(stepper_->steps());
+    progress_.start_after(march_->steps());
     for (int k = run_.first_step(); k <= steps; ++k) {
       if (interrupt_requested()) {
         interrupted_ = true;
         break;
       }
       try {
-        stepper_->step(data);
+        march_->step();
       } catch (const SolverFailure& e) {
         // Newton's own words speak of a steady flow; in a step, a shorter one is the remedy.
-        failure_ = "step " + std::to_string(k) + " (t = " + shortest(stepper_->time() + time_.dt) + " s): " + e.what() +
-                   (f_.stokes->newton() ? "; in a time step, a smaller time.dt helps Newton's method" : "");
+        failure_ = "step " + std::to_string(k) + " (t = " + shortest(march_->time() + time_.dt) + " s): " + e.what() +
+                   (march_->navier_stokes() ? "; in a time step, a smaller time.dt helps Newton's method" : "");
         break;
       }
       rows_.push_back(row());
       if (run_.frame_due(k)) add_frame();
       if (run_.checkpoint_due(k)) save();
       fault_step(k);
-      progress_.report(k, steps, stepper_->time());
+      progress_.report(k, steps, march_->time());
     }
     save();  // the run's end, also when stopped or failed: --resume continues from it
     // What was computed, as a frame too (the checkpoint lists the regular frames only: a
     // resumed run writes the series an uninterrupted run would have).
-    if ((interrupted_ || !failure_.empty()) && frames_.last_step() != stepper_->steps()) add_frame();
+    if ((interrupted_ || !failure_.empty()) && frames_.last_step() != march_->steps()) add_frame();
   }
 
   void measure(RunResult& r) override {
     RunMeasures& m = r.measures;
     m.fluid_mesh = stats_;
-    m.iterations = stepper_ ? stepper_->steps() : 0;
+    m.iterations = started_ ? march_->steps() : 0;
     m.converged = failure_.empty() && !interrupted_;
     m.status = !failure_.empty() ? "failed" : interrupted_ ? "interrupted" : "converged";
     m.failure = failure_;
@@ -130,33 +117,33 @@ class TimeFluidProblem final : public Problem {
     j = summary_header(c_, kind());
     j["mesh"] = {{"fluid", to_json(stats_)}};
     add_measures(j, r.measures);
-    j["steps"] = stepper_ ? stepper_->steps() : 0;  // SPEC §12's key; time.steps the same
+    j["steps"] = started_ ? march_->steps() : 0;  // SPEC §12's key; time.steps the same
     j["time"] = {{"dt", time_.dt}, {"t_end", time_.t_end}, {"scheme", time_.scheme},
-                 {"steps", stepper_ ? stepper_->steps() : 0}, {"t", stepper_ ? stepper_->time() : 0.0},
+                 {"steps", started_ ? march_->steps() : 0}, {"t", started_ ? march_->time() : 0.0},
                  {"frames", frames_.size()}};
     if (run_.resumed()) j["resumed"] = run_.resumed_json(c_.output.dir);
     j["obstacles"] = obstacles_json();
-    const FluidSolution* last = rows_.empty() ? nullptr : &stepper_->state();
-    if (!c_.output.fluid_probes.empty()) j["fluid_at"] = fluid_probes_json(c_, *f_.mesh, last);
-    j["fluid"] = fluid_json(*f_.stokes);
+    if (!c_.output.fluid_probes.empty())
+      j["fluid_at"] = rows_.empty() ? fluid_probes_json(c_, march_->mesh(), nullptr) : march_->probes();
+    j["fluid"] = march_ ? march_->json() : Json::object();
     j["fluid"].update(flow_json(c_));
     char text[256];
     std::snprintf(text, sizeof text, "%s: the fluid alone in time (%s, dt = %s s): %d steps to t = %s s on %d triangles.",
-                  c_.name.c_str(), time_.scheme.c_str(), shortest(time_.dt).c_str(), stepper_ ? stepper_->steps() : 0,
-                  shortest(stepper_ ? stepper_->time() : 0.0).c_str(), stats_.triangles);
+                  c_.name.c_str(), time_.scheme.c_str(), shortest(time_.dt).c_str(), started_ ? march_->steps() : 0,
+                  shortest(started_ ? march_->time() : 0.0).c_str(), stats_.triangles);
     r.report = std::string(text) + (failure_.empty() ? "" : " Failed at " + failure_ + ".") +
                (interrupted_ ? " Interrupted." : "") + " Results in " + c_.output.dir + "/.";
   }
 
   void final_fields(FinalFields& out) const override {
-    if (stepper_) out.fluid = fluid_arrays(*f_.mesh, stepper_->state(), chi());
+    if (started_) out.fluid = fluid_arrays(march_->mesh(), march_->state(), chi());
   }
 
   void write(RunOutputs& out) override {
     out.write("history.csv", [&](const std::string& p) { write_history(p); });
-    if (c_.output.vtu && stepper_) {
+    if (c_.output.vtu && started_) {
       frames_.write_collection(out);
-      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
+      out.write("fluid.vtu", [&](const std::string& p) { write_fluid_vtu(p, c_, march_->mesh(), march_->state(), chi()); });
     }
     if (c_.output.png && !rows_.empty()) {
       out.write("fluid.png", [&](const std::string& p) { picture(p); });
@@ -166,40 +153,28 @@ class TimeFluidProblem final : public Problem {
   }
 
  private:
-  Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(f_.mesh->num_triangles()); }
-  FluidSolution steady_flow(const std::function<void(double)>& data) {
-    data(0.0);
-    try {
-      FluidSolution v = f_.stokes->solve();
-      v.exact_on = nullptr;
-      return v;
-    } catch (const SolverFailure& e) {
-      throw SolverFailure(std::string("the steady flow at t = 0 (time.start_from = \"steady\"): ") + e.what());
-    }
-  }
-
+  Eigen::VectorXd chi() const { return Eigen::VectorXd::Zero(march_->mesh().num_triangles()); }
   // The frame's fields and its picture (the animation's).
   void add_frame() {
     if (!run_.out()) return;
     if (c_.output.vtu)
-      frames_.add(*run_.out(), stepper_->steps(), stepper_->time(),
-                  [&](const std::string& p) { write_fluid_vtu(p, c_, *f_.mesh, stepper_->state(), chi()); });
+      frames_.add(*run_.out(), march_->steps(), march_->time(),
+                  [&](const std::string& p) { write_fluid_vtu(p, c_, march_->mesh(), march_->state(), chi()); });
     if (c_.output.png)
-      pictures_.add(*run_.out(), stepper_->steps(), stepper_->time(), [&](const std::string& p) { picture(p); });
+      pictures_.add(*run_.out(), march_->steps(), march_->time(), [&](const std::string& p) { picture(p); });
   }
   void picture(const std::string& path) const {
-    write_fluid_png(path, c_, *f_.mesh, stepper_->state(), Mesh{}, {},
-                    c_.name + ": fluid velocity magnitude at t = " + shortest(stepper_->time()) + " s",
+    write_fluid_png(path, c_, march_->mesh(), march_->state(), Mesh{}, {},
+                    c_.name + ": fluid velocity magnitude at t = " + shortest(march_->time()) + " s",
                     "hF = " + shortest(c_.fluid->h) + ";  " + time_.scheme + ", dt = " + shortest(time_.dt));
   }
 
   // The stepper's v^n and v^{n−1}, the rows (each a step's t, Newton's steps, the
   // largest speed and the obstacles' forces) and the frames.
   void save() const {
-    if (!stepper_) return;
-    run_.write_checkpoint(stepper_->steps(), stepper_->time(), [&](Checkpoint& k) {
-      put_fluid(k, "v_n", stepper_->state());
-      put_fluid(k, "v_nm1", stepper_->previous());
+    if (!started_) return;
+    run_.write_checkpoint(march_->steps(), march_->time(), [&](Checkpoint& k) {
+      march_->save(k);
       const long width = 3 + 2 * static_cast<long>(obstacle_hole_names(c_).size());
       Eigen::MatrixXd rows(width, static_cast<long>(rows_.size()));
       for (std::size_t i = 0; i < rows_.size(); ++i) {
@@ -211,8 +186,7 @@ class TimeFluidProblem final : public Problem {
     });
   }
   void restore(const Checkpoint& k) {
-    const int nv = f_.mesh->num_vertices(), nt = f_.mesh->num_triangles();
-    restored_ = Restored{k.step, get_fluid(k, "v_n", nv, nt), get_fluid(k, "v_nm1", nv, nt)};
+    march_->restore(k);
     const Eigen::MatrixXd rows = k.matrix("rows");
     const long obstacles = static_cast<long>(obstacle_hole_names(c_).size());
     if (rows.rows() != 3 + 2 * obstacles || rows.cols() != k.step)
@@ -227,16 +201,7 @@ class TimeFluidProblem final : public Problem {
   }
 
   // This step's row: the forces with the step's ρ∂v/∂t and f_F at its time.
-  StepRow row() const {
-    StepRow r{stepper_->time(), 0, max_speed(stepper_->state()), {}};
-    if (const FluidNewtonReport* n = f_.stokes->newton()) r.newton_steps = n->steps + n->picard_steps;
-    MomentumModel model = momentum_model(*c_.fluid);
-    model.inertia = stepper_->last_step_inertia();
-    const VectorField f = fluid_body_force(*c_.fluid, r.t);
-    for (const std::string& hole : obstacle_hole_names(c_))
-      r.forces.push_back(hole_force(*f_.mesh, model, f, stepper_->state(), f_.mesh->label(hole), {}));
-    return r;
-  }
+  StepRow row() const { return {march_->time(), march_->newton_steps(), max_speed(march_->state()), march_->forces()}; }
 
   // obstacles[i]: the last step's force, and each component's largest and smallest
   // value over the run with their times (the DFG 2D-3 benchmark's C_D,max, C_L,max).
@@ -284,19 +249,14 @@ class TimeFluidProblem final : public Problem {
   const Case& c_;
   TimeParams time_;
   MeshStatistics stats_;
-  FluidSetup f_;
-  std::unique_ptr<FluidTimeStepper> stepper_;
+  std::unique_ptr<FluidMarch> march_;
+  bool started_ = false;  // march_ has a state (start() returned)
   std::vector<StepRow> rows_;
   FrameSeries frames_{"fluid"}, pictures_{"frame", ".png"};
   std::string failure_;
   bool interrupted_ = false;
   TimeProgress progress_;
   TimeRun run_;
-  struct Restored {
-    int step;
-    FluidSolution v_n, v_nm1;
-  };
-  std::optional<Restored> restored_;  // a checkpoint's state, until solve() gives it to the stepper
 };
 
 }  // namespace

@@ -172,6 +172,31 @@ TEST(Case, BoxSidesRefuseUnknownValuesAndBoxesWithoutAnOutflow) {
   EXPECT_EQ(message({"fluid.bottom=wall", "fluid.top=outflow"}), "no error");  // an outflow, no inflow
 }
 
+// fluid.element: "mini" by default; "taylor-hood" for the fluid alone, with Newton's
+// method in time; refused with a structure, and an unknown name, by key and choices.
+TEST(Case, TheTaylorHoodElementIsForTheFluidAlone) {
+  const auto message = [](const std::string& file, const std::vector<std::string>& sets) {
+    try {
+      load_case(file, sets);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(load_case("", {}).fluid->element, "mini");
+  const std::string dfg = std::string(FSICONTACT_SOURCE_DIR) + "/cases/dfg-2d2.toml";
+  EXPECT_EQ(message(dfg, {"fluid.element=taylor-hood"}), "no error");
+  EXPECT_EQ(load_case(dfg, {"fluid.element=taylor-hood"}).fluid->element, "taylor-hood");
+  EXPECT_EQ(message("", {"fluid.element=p2p1"}), "--set fluid.element: fluid.element = \"p2p1\" is not a known "
+                                                 "choice; allowed: \"mini\", \"taylor-hood\"");
+  const std::string coupled = message("", {"fluid.element=taylor-hood"});
+  EXPECT_NE(coupled.find("fluid.element = \"taylor-hood\" solves the fluid alone so far"), std::string::npos) << coupled;
+  EXPECT_NE(coupled.find("allowed: \"mini\" with a structure"), std::string::npos) << coupled;
+  const std::string lagged = message(dfg, {"fluid.element=taylor-hood", "time.convection=semi-implicit"});
+  EXPECT_NE(lagged.find("time.convection = \"semi-implicit\""), std::string::npos) << lagged;
+  EXPECT_NE(lagged.find("allowed: \"implicit\" with fluid.element = \"taylor-hood\""), std::string::npos) << lagged;
+}
+
 TEST(Case, IntegersAreAcceptedForRealKeys) {
   const Case c = load_case("", {"structure.E=300000", "fluid.Vmax=8"});
   EXPECT_EQ(c.structure.E, 3e5);

@@ -54,6 +54,7 @@ std::string other_value(const std::string& key) {
                                                              {"fluid.rho", "1000"},
                                                              {"fluid.newton_max_steps", "7"},
                                                              {"fluid.viscous_form", "gradient"},
+                                                             {"fluid.element", "taylor-hood"},
                                                              {"time.dt", "0.5"},
                                                              {"time.t_end", "3"},
                                                              {"time.scheme", "bdf2"},
@@ -80,6 +81,7 @@ std::vector<std::string> companions(const std::string& key) {
   if (key == "fluid.bottom") return {"fluid.right=outflow"};  // an outflow side remains
   if (key == "fluid.model") return {"fluid.rho=1"};                 // Navier–Stokes needs its density
   if (key == "fluid.h_obstacles") return {"fluid.mesher=gmsh"};      // a Gmsh size field
+  if (key == "fluid.element") return {"structure.shape=none"};       // Taylor–Hood: the fluid alone
   if (key.rfind("time.", 0) == 0)  // SPEC §12: so far the fluid alone, with its density
     return {"structure.shape=none", "fluid.rho=1", "time.dt=1", "time.t_end=2"};
   return {};

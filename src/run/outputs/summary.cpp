@@ -49,6 +49,7 @@ Json to_json(const FluidParams& f) {
             {"mesher", f.mesher},
             {"model", f.model},
             {"viscous_form", f.viscous_form},
+            {"element", f.element},
             {"newton_tol", f.newton_tol},
             {"newton_max_steps", f.newton_max_steps}};
   if (f.rho > 0) j["rho"] = f.rho;  // 0: not given (Stokes)
