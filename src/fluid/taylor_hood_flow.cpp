@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/timer.hpp"
 
 namespace fsi {
@@ -23,6 +24,45 @@ double TaylorHoodFlow::residual_norm(const Eigen::VectorXd& U) {
   return system_.free_part(R_).norm();
 }
 
+Eigen::VectorXd TaylorHoodFlow::newton_direction(bool picard) {
+  Stopwatch clock;
+  system_.set_picard(picard);
+  system_.assemble(U_, true, R_);
+  system_.set_picard(false);
+  timing_.assembly += clock.elapsed();
+  clock = Stopwatch();
+  if (!analysed_) solver_->analyze(system_.jacobian()), analysed_ = true;
+  solver_->factorize(system_.jacobian());
+  timing_.factorization += clock.elapsed();
+  clock = Stopwatch();
+  Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
+  timing_.solve += clock.elapsed();
+  return delta;
+}
+
+// Armijo's test on the full step and its halves down to a sixteenth; where none passes
+// (far from the solution at a high Reynolds number) the step is taken back and a
+// Picard step taken instead.
+double TaylorHoodFlow::step_from(double r, double scale) {
+  const Eigen::VectorXd delta = newton_direction(false);
+  ++report_.total_steps;
+  for (double length = 1; length >= 1.0 / 16; length /= 2) {
+    Eigen::VectorXd trial = U_;
+    system_.add_free(delta, length, trial);
+    const double r_trial = residual_norm(trial) / scale;
+    if (r_trial <= (1 - 1e-4 * length) * r) {
+      U_ = std::move(trial);
+      ++report_.steps;
+      if (length < 1) ++report_.damped;
+      return r_trial;
+    }
+  }
+  ++report_.rejected;
+  system_.add_free(newton_direction(true), 1.0, U_);
+  ++report_.picard_steps, ++report_.total_picard_steps;
+  return residual_norm(U_) / scale;
+}
+
 const Eigen::VectorXd& TaylorHoodFlow::solve() {
   system_.impose(U_);
   Eigen::VectorXd lifted = Eigen::VectorXd::Zero(system_.dofs());
@@ -31,37 +71,12 @@ const Eigen::VectorXd& TaylorHoodFlow::solve() {
   const double scale = load > 0 ? load : 1.0;
   double r = residual_norm(U_) / scale;
   report_.residuals = {r};
-  report_.steps = report_.damped = 0;
+  report_.steps = report_.damped = report_.picard_steps = report_.rejected = 0;
   ++report_.solves;
-  while (r > options_.tol) {
-    if (report_.steps == options_.max_steps) fail();
-    Stopwatch clock;
-    system_.assemble(U_, true, R_);
-    timing_.assembly += clock.elapsed();
-    clock = Stopwatch();
-    if (!analysed_) solver_->analyze(system_.jacobian()), analysed_ = true;
-    solver_->factorize(system_.jacobian());
-    timing_.factorization += clock.elapsed();
-    clock = Stopwatch();
-    const Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
-    timing_.solve += clock.elapsed();
-    // The full step while the residual falls; halved otherwise, down to a sixteenth.
-    Eigen::VectorXd trial;
-    double length = 1, r_trial = 0;
-    for (;;) {
-      trial = U_;
-      system_.add_free(delta, length, trial);
-      r_trial = residual_norm(trial) / scale;
-      if (r_trial < r || length <= 1.0 / 16) break;
-      length /= 2;
-    }
-    if (length < 1) ++report_.damped;
-    U_ = std::move(trial);
-    r = r_trial;
+  for (int k = 0; r > options_.tol; ++k) {
+    if (k == options_.max_steps || !std::isfinite(r)) fail();
+    r = step_from(r, scale);
     report_.residuals.push_back(r);
-    ++report_.steps;
-    ++report_.total_steps;
-    if (!std::isfinite(r)) fail();
   }
   report_.max_final_residual = std::max(report_.max_final_residual, r);
   return U_;
@@ -69,13 +84,12 @@ const Eigen::VectorXd& TaylorHoodFlow::solve() {
 
 void TaylorHoodFlow::fail() const {
   std::string history;
-  char text[32];
-  for (double r : report_.residuals) {
-    std::snprintf(text, sizeof text, "%s%.3g", history.empty() ? "" : ", ", r);
-    history += text;
-  }
-  throw SolverFailure("Newton's method (Taylor–Hood) did not reach fluid.newton_tol = " + std::to_string(options_.tol) +
-                      " in " + std::to_string(options_.max_steps) + " steps (relative residuals " + history + ")");
+  for (double r : report_.residuals) history += (history.empty() ? "" : ", ") + approx(r, 2);
+  throw SolverFailure("Newton's method (Taylor–Hood) did not reach fluid.newton_tol = " + shortest(options_.tol) +
+                      " in " + std::to_string(options_.max_steps) + " steps (" + std::to_string(report_.picard_steps) +
+                      " of them Picard's, " + std::to_string(report_.damped) + " damped); relative residuals " + history +
+                      ": a steady flow may not exist at this Reynolds number (lower fluid.rho or the inflow, or "
+                      "raise fluid.newton_max_steps)");
 }
 
 void TaylorHoodFlow::start(double rho, TimeScheme scheme, double dt, const Eigen::VectorXd& initial, double t0) {

@@ -3,10 +3,12 @@
 // mesh (SPEC §12), the forces on the holes by the residual method (SPEC §10), and the
 // P1 view of the state that the outputs draw and write.
 //
-// Newton: J δ = −R on the free dofs, the full step taken while the residual falls and
-// halved (to 1/16) where it does not; converged when ‖R_free‖ ≤ tol · scale, scale the
-// residual's norm at the data's own lifted state (U = 0 but the prescribed values). The
-// Jacobian's pattern is analysed once ("mumps-lu"), every step factorises its values.
+// Newton: J δ = −R on the free dofs, damped by halving until the residual falls
+// (Armijo's test), and where even a sixteenth does not help, a Picard (Oseen) step
+// instead, as the mini element's NewtonSolve; converged when ‖R_free‖ ≤ tol · scale,
+// scale the residual's norm at the data's own lifted state (U = 0 but the prescribed
+// values). The Jacobian's pattern is analysed once ("mumps-lu"), every step factorises
+// its values.
 #pragma once
 
 #include <Eigen/Core>
@@ -72,6 +74,10 @@ class TaylorHoodFlow {
 
  private:
   double residual_norm(const Eigen::VectorXd& U);
+  // J δ = −R(U_) (Newton's J, or Picard's).
+  Eigen::VectorXd newton_direction(bool picard);
+  // One step from U_ at relative residual r; returns the new one.
+  double step_from(double r, double scale);
   [[noreturn]] void fail() const;
 
   TaylorHoodSystem& system_;

@@ -133,7 +133,7 @@ void TaylorHoodSystem::element(int t, const Eigen::VectorXd& U, bool jacobian, L
       K.block<6, 6>(6 * c, 6 * c) += dx * (m * NN + mu * GG + rho * N * adv.transpose());
       for (int e = 0; e < 2; ++e) {
         // (δ·∇)w: N_j ∂_e w_c; the symmetric form's ∂_c N_j ∂_e N_i.
-        K.block<6, 6>(6 * c, 6 * e) += dx * rho * G(c, e) * NN;
+        if (!picard_) K.block<6, 6>(6 * c, 6 * e) += dx * rho * G(c, e) * NN;
         if (symmetric) K.block<6, 6>(6 * c, 6 * e) += dx * mu * x.grad.col(e) * x.grad.col(c).transpose();
       }
       K.block<6, 3>(6 * c, 12) -= dx * x.grad.col(c) * x.lambda.transpose();

@@ -130,8 +130,7 @@ class BodyFittedProblem : public FluidStructureProblem {
 
   // The last pass's fluid on its own mesh (χ = 0: the structure is a hole in it).
   void final_fields(FinalFields& out) const override {
-    if (s_ && result_.structure.u.size() == 2L * s_->mesh().num_vertices())
-      out.structure = structure_arrays(*s_, result_.structure);
+    if (s_) out.structure = structure_arrays_if_solved(*s_, result_.structure);
     if (last_)
       out.fluid = fluid_arrays(*last_->mesh, last_->solution, Eigen::VectorXd::Zero(last_->mesh->num_triangles()));
   }

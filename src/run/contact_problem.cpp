@@ -95,7 +95,7 @@ class ContactProblem final : public Problem {
   }
 
   void final_fields(FinalFields& out) const override {
-    if (solution_.u.size() == 2L * s_.mesh().num_vertices()) out.structure = structure_arrays(s_, solution_);
+    out.structure = structure_arrays_if_solved(s_, solution_);
   }
 
   void write(RunOutputs& out) override {

@@ -1,21 +1,20 @@
 #include "run/penalised_problem.hpp"
 
-#include "run/outputs/field_arrays.hpp"
-
 #include <cmath>
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "fem/probes.hpp"
 #include "io/atomic_file.hpp"
 #include "io/figure.hpp"
 #include "io/vtu.hpp"
-#include "run/outputs/coupling_outputs.hpp"
 #include "run/case_fields.hpp"
 #include "run/fluid_band.hpp"
+#include "run/outputs/coupling_outputs.hpp"
+#include "run/outputs/field_arrays.hpp"
 #include "run/outputs/fluid_outputs.hpp"
 #include "run/outputs/obstacle_forces.hpp"
 #include "run/outputs/output_dir.hpp"
-#include "fem/probes.hpp"
 
 namespace fsi {
 namespace {
@@ -175,7 +174,7 @@ void PenalisedProblem::write(RunOutputs& out) {
 }
 
 void PenalisedProblem::final_fields(FinalFields& out) const {
-  if (s_ && result_.structure.u.size() == 2L * s_->mesh().num_vertices()) out.structure = structure_arrays(*s_, result_.structure);
+  if (s_) out.structure = structure_arrays_if_solved(*s_, result_.structure);
   if (fluid_) out.fluid = fluid_arrays(*f_->mesh, *fluid_, f_->stokes->last_solution_chi());
 }
 

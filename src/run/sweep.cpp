@@ -168,7 +168,7 @@ SweepResult run_sweep(const CaseSource& source, const std::string& rows_csv, con
     const Stopwatch clock;
     RunOptions run_options;
     run_options.cache = &cache;
-    run_options.keep_fields = options.keep_fields;
+    run_options.keep_fields = options.keep_fields && options.on_row;  // nobody to hand them to otherwise
     const std::string prefix = "[row " + std::to_string(i + 1) + "] ";
     if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
     const RunResult r = run_case(rows[i].c, run_options);

@@ -83,8 +83,8 @@ void run_one(LevelRun& run, SetupCache& cache, const ConvergeOptions& options, c
   run_options.cache = &cache;
   run_options.initial_displacement = start;
   if (options.progress) run_options.progress = [&, prefix](const std::string& l) { options.progress(prefix + l); };
-  const Stopwatch clock;
   run_options.keep_fields = options.keep_fields && options.on_run;
+  const Stopwatch clock;
   run.result = run_case(run.spec.c, run_options);
   run.wall_s = clock.elapsed();
   run.status = status_of(run.result);

@@ -99,13 +99,18 @@ TEST(NavierStokesRun, DrawsTheWake) {
 
 // Re = 2000 in the DFG channel: no steady flow from rest; newton_max_steps bounds the
 // work, and summary.json says "failed" with the residual history.
+// Both elements alike.
 TEST(NavierStokesRun, NoSteadyFlowIsAFailureWithTheResidualHistory) {
-  const Outcome r = run("dfg-2d1", "--set fluid.h=0.04 --set fluid.h_near=0.02 --set fluid.rho=100 --set fluid.newton_max_steps=6");
-  EXPECT_EQ(r.status, 1) << r.err;
-  ASSERT_TRUE(r.summary.is_object());
-  EXPECT_EQ(r.summary["status"], "failed");
-  EXPECT_NE(r.summary["failure"].get<std::string>().find("Reynolds"), std::string::npos);
-  EXPECT_EQ(r.summary["fluid"]["newton"]["last_residuals"].size(), 7u);
+  for (const char* element : {"mini", "taylor-hood"}) {
+    const Outcome r = run("dfg-2d1", "--set fluid.h=0.04 --set fluid.h_near=0.02 --set fluid.rho=100 "
+                          "--set fluid.newton_max_steps=6 --set fluid.element=" + std::string(element));
+    EXPECT_EQ(r.status, 1) << element << r.err;
+    ASSERT_TRUE(r.summary.is_object()) << element;
+    EXPECT_EQ(r.summary["status"], "failed") << element;
+    EXPECT_NE(r.summary["failure"].get<std::string>().find("Reynolds"), std::string::npos) << element;
+    EXPECT_EQ(r.summary["fluid"]["newton"]["last_residuals"].size(), 7u) << element;
+    EXPECT_EQ(r.summary["obstacles"][0]["force"], nullptr) << element;
+  }
 }
 
 // The flap of cases/flap-against-a-wedge-inertia.toml pressed onto the wedge by the

@@ -14,6 +14,11 @@ CellArray triangle_cells(const Mesh& mesh) {
 
 }  // namespace
 
+std::optional<FieldArrays> structure_arrays_if_solved(const StructureSetup& s, const ContactSolution& solution) {
+  if (solution.u.size() != 2L * s.mesh().num_vertices()) return std::nullopt;
+  return structure_arrays(s, solution);
+}
+
 FieldArrays structure_arrays(const StructureSetup& s, const ContactSolution& solution) {
   const Mesh& ref = s.mesh();
   const Eigen::VectorXd u1 = component(solution.u, 0), u2 = component(solution.u, 1);

@@ -32,6 +32,9 @@ struct FinalFields {
 // displacement, displacement_magnitude, contact_multiplier, contact_status (per node),
 // von_mises (per triangle).
 FieldArrays structure_arrays(const StructureSetup& s, const ContactSolution& solution);
+// The same, or nothing while `solution` holds no displacement of s's mesh (a run that
+// failed before its first structure solve).
+std::optional<FieldArrays> structure_arrays_if_solved(const StructureSetup& s, const ContactSolution& solution);
 // velocity (its P1 part), velocity_magnitude, pressure (per vertex), chi (per triangle).
 FieldArrays fluid_arrays(const Mesh& mesh, const FluidSolution& s, const Eigen::VectorXd& chi);
 
