@@ -81,9 +81,8 @@ TaylorHoodErrors solve_square(const Flow& flow, int n) {
   return taylor_hood_errors(system, U, v_exact, grad_v, p_exact);
 }
 
-void expect_rates(const Flow& flow) {
+void expect_rates(const Flow& flow, const std::vector<int>& n = {4, 8, 16, 32}) {
   std::vector<TaylorHoodErrors> e;
-  const std::vector<int> n = {4, 8, 16, 32};
   for (int k : n) e.push_back(solve_square(flow, k));
   for (std::size_t k = 1; k < n.size(); ++k) {
     const double h0 = 1.0 / n[k - 1], h1 = 1.0 / n[k];
@@ -107,7 +106,7 @@ TEST(TaylorHood, NavierStokesConvergesAtTaylorHoodRates) {
   Flow flow{{0.05, ViscousForm::gradient, 1.0}};  // Re of order 20 on the unit square
   expect_rates(flow);
   flow.model.form = ViscousForm::symmetric;
-  expect_rates(flow);
+  expect_rates(flow, {4, 8, 16});  // the form's own terms: the gradient's rates above, to 16 × 16
 }
 
 // Newton's method converges quadratically: once near the solution, each relative
