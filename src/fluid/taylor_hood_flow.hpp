@@ -7,8 +7,16 @@
 // (Armijo's test), and where even a sixteenth does not help, a Picard (Oseen) step
 // instead, as the mini element's NewtonSolve; converged when ‖R_free‖ ≤ tol · scale,
 // scale the residual's norm at the data's own lifted state (U = 0 but the prescribed
-// values). The Jacobian's pattern is analysed once ("mumps-lu"), every step factorises
-// its values.
+// values). The Jacobian's pattern is analysed once ("mumps-lu").
+//
+// In time steps the last Newton Jacobian's factors are reused (the chord method) while
+// they contract the residual fast: from one Δt to the next the Jacobian moves by
+// O(Δt) in its convection only, and a factorisation is three quarters of a Newton step
+// (docs/performance.md), so most steps need a back-substitution and a residual each.
+// A chord step that does not halve the residual is taken back for a Newton step with a
+// fresh Jacobian; one that does not cut it tenfold is kept but its factors are not. The
+// answer is the same (the same test ‖R_free‖ ≤ tol · scale); checkpoints keep the state
+// the factors were computed at, so that a resumed run reuses the very same factors.
 #pragma once
 
 #include <Eigen/Core>
@@ -33,6 +41,7 @@ struct TaylorHoodOptions {
   double tol = 1e-10;
   int max_steps = 30;
   std::string solver = kNavierStokesSolver;  // factors unsymmetric matrices
+  bool reuse_factors = true;                 // chord steps in time steps (above)
 };
 
 class TaylorHoodFlow {
@@ -50,15 +59,19 @@ class TaylorHoodFlow {
   const Eigen::VectorXd& step(const std::function<void(double)>& data = {});
   // A resumed run: `steps` taken, the last two states.
   void restore(int steps, const Eigen::VectorXd& u_n, const Eigen::VectorXd& u_nm1);
+  // The state and mass coefficient the reusable factors were computed at (false: none),
+  // and those factors recomputed from them (a resumed run).
+  bool factors_state(Eigen::VectorXd& U, double& mass) const;
+  void restore_factors(const Eigen::VectorXd& U, double mass);
   double time() const { return t0_ + steps_ * dt_; }
   int steps() const { return steps_; }
 
   const Eigen::VectorXd& state() const { return U_; }
   const Eigen::VectorXd& previous() const { return U_nm1_; }
-  // The force of the fluid on the boundary labelled `label` (N per metre): −Σ of the
+  // The force of the fluid on each boundary of `labels` (N per metre): −Σ of the
   // momentum residual's rows at its P2 nodes, at the state and with the data and the
-  // time derivative of its solve.
-  Point force(int label);
+  // time derivative of its solve (one assembly for all).
+  std::vector<Point> forces(const std::vector<int>& labels);
   // The state at the vertices (v1, v2, p; no bubbles): what fluid.vtu and the pictures
   // show. P2's midpoint values are not in it.
   FluidSolution vertex_view() const;
@@ -68,6 +81,7 @@ class TaylorHoodFlow {
   FluidValue at(int t, const Eigen::Vector3d& straight_lambda) const;
   const FluidNewtonReport& report() const { return report_; }
   int factorizations() const { return solver_->factorizations(); }
+  int chord_steps() const { return chord_steps_; }  // over the run: steps on reused factors
   int analyses() const { return solver_->analyses(); }
   std::string solver_name() const { return solver_->name(); }
   const TaylorHoodTiming& timing() const { return timing_; }
@@ -78,12 +92,23 @@ class TaylorHoodFlow {
   Eigen::VectorXd newton_direction(bool picard);
   // One step from U_ at relative residual r; returns the new one.
   double step_from(double r, double scale);
+  // A chord step on the kept factors; false (U_ unchanged) if it does not contract enough.
+  bool chord_step(double& r, double scale);
+  bool factors_usable() const;
   [[noreturn]] void fail() const;
 
   TaylorHoodSystem& system_;
   TaylorHoodOptions options_;
   std::unique_ptr<SparseDirectSolver> solver_;
   bool analysed_ = false;
+  struct Factors {  // what the solver's current factors are of
+    bool newton = false;  // a Newton Jacobian (not Picard's)
+    Eigen::VectorXd U;
+    double mass = 0;
+    long revision = -1;
+  } factors_;
+  bool reuse_ = false;  // time steps: chord steps allowed
+  int chord_steps_ = 0;
   Eigen::VectorXd U_, U_nm1_, R_;
   TimeScheme scheme_ = TimeScheme::bdf1;
   double dt_ = 0, t0_ = 0, rho_ = 0;

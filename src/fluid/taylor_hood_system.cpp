@@ -51,6 +51,7 @@ void TaylorHoodSystem::set_data(const VectorField& f, const FluidBoundaryConditi
 }
 
 void TaylorHoodSystem::set_inertia(double mass, const Eigen::VectorXd& history) {
+  if (mass != mass_) ++revision_;
   mass_ = mass;
   history_ = history.head(2 * nn_);
 }

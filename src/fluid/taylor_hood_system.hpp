@@ -54,11 +54,15 @@ class TaylorHoodSystem {
   // The time derivative: the mass coefficient ρα/Δt and the history ρ(β₁vⁿ + β₂vⁿ⁻¹)/Δt
   // as a P2 velocity (2·nodes; the rest of a dof vector is ignored). Zero: steady.
   void set_inertia(double mass, const Eigen::VectorXd& history);
+  double mass() const { return mass_; }
   // Picard's (Oseen's) linearisation in the Jacobian: ρ(w·∇)δ only, without (δ·∇)w
   // (Newton's fallback where no damping helps). The residual is the same.
   void set_picard(bool picard) { picard_ = picard; }
   // The penalty κ_T = χ_T/ε per triangle (empty: none).
-  void set_penalty(const Eigen::VectorXd& kappa) { kappa_ = kappa; }
+  void set_penalty(const Eigen::VectorXd& kappa) { kappa_ = kappa, ++revision_; }
+  // Changes whenever the Jacobian at a given U does (a new mass coefficient, a new
+  // penalty): factors of an older revision do not belong to this operator.
+  long revision() const { return revision_; }
 
   // U with its prescribed dofs set to the boundary values.
   void impose(Eigen::VectorXd& U) const;
@@ -85,6 +89,7 @@ class TaylorHoodSystem {
   Eigen::VectorXd prescribed_;          // boundary values at the prescribed dofs
   std::vector<int> free_index_, free_;  // dof → free index (−1: prescribed); free → dof
   double mass_ = 0;
+  long revision_ = 0;
   bool picard_ = false;
   Eigen::VectorXd history_;
   Eigen::VectorXd kappa_;

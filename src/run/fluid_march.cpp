@@ -107,7 +107,11 @@ class TaylorHoodMarch final : public FluidMarch {
       }
     }
     s_.flow->start(c_.fluid->rho, time_scheme(time_), time_.dt, initial);
-    if (restored_) s_.flow->restore(restored_->step, restored_->u_n, restored_->u_nm1), restored_.reset();
+    if (restored_) {
+      s_.flow->restore(restored_->step, restored_->u_n, restored_->u_nm1);
+      if (restored_->factors_at.size()) s_.flow->restore_factors(restored_->factors_at, restored_->factors_mass);
+      restored_.reset();
+    }
     view_ = s_.flow->vertex_view();
   }
   void step() override {
@@ -125,10 +129,20 @@ class TaylorHoodMarch final : public FluidMarch {
   void save(Checkpoint& k) const override {
     k.put("taylor_hood.u_n", s_.flow->state());
     k.put("taylor_hood.u_nm1", s_.flow->previous());
+    Eigen::VectorXd at;
+    double mass = 0;
+    if (s_.flow->factors_state(at, mass)) {  // the chord method's factors, recomputed on resume
+      k.put("taylor_hood.factors_at", at);
+      k.put("taylor_hood.factors_mass", mass);
+    }
   }
   void restore(const Checkpoint& k) override {
     const long n = s_.system->dofs();
-    restored_ = Restored{k.step, k.vector("taylor_hood.u_n", n), k.vector("taylor_hood.u_nm1", n)};
+    restored_ = Restored{k.step, k.vector("taylor_hood.u_n", n), k.vector("taylor_hood.u_nm1", n), {}, 0};
+    if (k.has("taylor_hood.factors_at")) {
+      restored_->factors_at = k.vector("taylor_hood.factors_at", n);
+      restored_->factors_mass = k.scalar("taylor_hood.factors_mass");
+    }
   }
 
  private:
@@ -139,6 +153,8 @@ class TaylorHoodMarch final : public FluidMarch {
   struct Restored {
     int step;
     Eigen::VectorXd u_n, u_nm1;
+    Eigen::VectorXd factors_at;  // empty: no reusable factors
+    double factors_mass;
   };
   std::optional<Restored> restored_;
 };

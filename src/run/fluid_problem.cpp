@@ -106,7 +106,7 @@ class FluidProblem final : public Problem {
     j = summary_header(c_, kind());
     j["mesh"] = {{"fluid", to_json(stats_)}};
     add_measures(j, r.measures);
-    j["obstacles"] = th_.flow ? taylor_hood_forces_json() : obstacle_forces_json(c_, *f_);
+    j["obstacles"] = th_.flow ? hole_forces_json(c_, fluid_ ? &th_forces_ : nullptr) : obstacle_forces_json(c_, *f_);
     if (!c_.output.fluid_probes.empty())
       j["fluid_at"] = th_.flow ? (fluid_ ? taylor_hood_probes_json(c_, th_) : fluid_probes_json(c_, mesh(), nullptr))
                                : fluid_probes_json(c_, *f_);
@@ -144,12 +144,6 @@ class FluidProblem final : public Problem {
   const Mesh& mesh() const { return th_.flow ? *th_.mesh : *f_->mesh; }
   Eigen::VectorXd chi() const {
     return th_.flow ? Eigen::VectorXd::Zero(th_.mesh->num_triangles()) : f_->stokes->last_solution_chi();
-  }
-  Json taylor_hood_forces_json() const {
-    Json list = Json::array();
-    for (std::size_t i = 0; i < obstacle_hole_names(c_).size(); ++i)
-      list.push_back({{"force", fluid_ ? point_json(th_forces_[i]) : Json(nullptr)}});
-    return list;
   }
   const Case& c_;
   SetupCache local_cache_;

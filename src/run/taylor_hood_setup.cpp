@@ -49,9 +49,9 @@ void set_taylor_hood_data(TaylorHoodSetup& s, const Case& c, double t) {
 }
 
 std::vector<Point> taylor_hood_hole_forces(TaylorHoodSetup& s, const Case& c) {
-  std::vector<Point> forces;
-  for (const std::string& hole : obstacle_hole_names(c)) forces.push_back(s.flow->force(s.mesh->label(hole)));
-  return forces;
+  std::vector<int> labels;
+  for (const std::string& hole : obstacle_hole_names(c)) labels.push_back(s.mesh->label(hole));
+  return s.flow->forces(labels);
 }
 
 Json taylor_hood_probes_json(const Case& c, const TaylorHoodSetup& s) {
@@ -78,6 +78,7 @@ Json taylor_hood_json(const TaylorHoodSetup& s) {
             {"solver", flow.solver_name()},
             {"analyses", flow.analyses()},
             {"factorizations", flow.factorizations()},
+            {"chord_steps", flow.chord_steps()},
             {"assembly_s", t.assembly},
             {"factorization_s", t.factorization},
             {"solve_s", t.solve},

@@ -157,7 +157,12 @@ TEST(TaylorHood, CurvedHoleMeetsTheCircleToFourthOrderInArea) {
 // v = (y², x²) cos t, p = (x + y) cos t lie in P2 × P1: the discrete solution is exact
 // in space at every time, so its error at T is the scheme's alone. Navier–Stokes, the
 // gradient form, a traction on the right.
-double time_error(TimeScheme scheme, int steps) {
+struct March {
+  double error;           // velocity in L² at T
+  Eigen::VectorXd state;  // at T
+  int factorizations, chord_steps;
+};
+March march(TimeScheme scheme, int steps, bool reuse_factors = true) {
   const Mesh mesh = testing::structured_rectangle(1.0, 1.0, 4, 4);
   const P2Space space(mesh);
   const IsoP2Geometry geometry(space, {}, 5);
@@ -177,7 +182,9 @@ double time_error(TimeScheme scheme, int steps) {
   bc.g = v;
   bc.tractions.emplace_back(mesh.label("right"), traction);
   TaylorHoodSystem system(geometry, model, f, bc);
-  TaylorHoodFlow flow(system);
+  TaylorHoodOptions options;
+  options.reuse_factors = reuse_factors;
+  TaylorHoodFlow flow(system, options);
   Eigen::VectorXd U0 = Eigen::VectorXd::Zero(system.dofs());
   for (int i = 0; i < space.num_nodes(); ++i)
     for (int c = 0; c < 2; ++c) U0[system.velocity_dof(c, i)] = v(geometry.nodes()[i])[c];
@@ -192,9 +199,11 @@ double time_error(TimeScheme scheme, int steps) {
   const auto g_now = [&](const Point& x) {
     return Eigen::Matrix2d((Eigen::Matrix2d() << 0, 2 * x.y(), 2 * x.x(), 0).finished() * std::cos(t));
   };
-  return taylor_hood_errors(system, flow.state(), v_now, g_now, [&](const Point& x) { return (x.x() + x.y()) * std::cos(t); })
-      .velocity_l2;
+  const auto p_now = [&](const Point& x) { return (x.x() + x.y()) * std::cos(t); };
+  return {taylor_hood_errors(system, flow.state(), v_now, g_now, p_now).velocity_l2, flow.state(),
+          flow.factorizations(), flow.chord_steps()};
 }
+double time_error(TimeScheme scheme, int steps) { return march(scheme, steps).error; }
 
 TEST(TaylorHood, BdfStepsConvergeAtTheirOrdersInTime) {
   for (TimeScheme scheme : {TimeScheme::bdf1, TimeScheme::bdf2}) {
@@ -207,6 +216,18 @@ TEST(TaylorHood, BdfStepsConvergeAtTheirOrdersInTime) {
       EXPECT_NEAR(rate, order, 0.15);
     }
   }
+}
+
+// The chord method (reused factors in time steps) reaches the same states as Newton's
+// with a fresh Jacobian in every step, on a fraction of the factorisations.
+TEST(TaylorHood, ReusedFactorsGiveNewtonsStatesWithFewerFactorisations) {
+  const March chord = march(TimeScheme::bdf2, 40, true), newton = march(TimeScheme::bdf2, 40, false);
+  std::printf("factorisations: %d reused (%d chord steps), %d fresh\n", chord.factorizations, chord.chord_steps,
+              newton.factorizations);
+  EXPECT_EQ(newton.chord_steps, 0);
+  EXPECT_GT(chord.chord_steps, 40);
+  EXPECT_LT(chord.factorizations, newton.factorizations / 4);
+  EXPECT_LT((chord.state - newton.state).norm(), 1e-8 * newton.state.norm());
 }
 
 }  // namespace

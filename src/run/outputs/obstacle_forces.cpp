@@ -54,16 +54,17 @@ std::vector<std::string> obstacle_hole_names(const Case& c) {
 }
 
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa) {
+  if (!s) return hole_forces_json(c, nullptr);
+  std::vector<Point> forces;
+  for (const std::string& hole : obstacle_hole_names(c))
+    forces.push_back(hole_force(mesh, momentum_model(*c.fluid), fluid_body_force(*c.fluid), *s, mesh.label(hole), kappa));
+  return hole_forces_json(c, &forces);
+}
+
+Json hole_forces_json(const Case& c, const std::vector<Point>* forces) {
   Json list = Json::array();
-  for (const std::string& hole : obstacle_hole_names(c)) {
-    if (!s) {
-      list.push_back({{"force", nullptr}});
-      continue;
-    }
-    const Point force =
-        hole_force(mesh, momentum_model(*c.fluid), fluid_body_force(*c.fluid), *s, mesh.label(hole), kappa);
-    list.push_back({{"force", point_json(force)}});
-  }
+  for (std::size_t i = 0; i < obstacle_hole_names(c).size(); ++i)
+    list.push_back({{"force", forces ? point_json((*forces)[i]) : Json(nullptr)}});
   return list;
 }
 

@@ -29,6 +29,9 @@ Json obstacle_forces_json(const Case& c, FluidSetup& f);
 // penalty); the holes labelled Sigma_5_i, or Sigma_5 for [obstacle].
 Json hole_forces_json(const Case& c, const Mesh& mesh, const FluidSolution* s, const Eigen::VectorXd& kappa);
 
+// The same list from forces already computed, one per hole (null: each force null).
+Json hole_forces_json(const Case& c, const std::vector<Point>* forces);
+
 // summary.json's fluid_at (output.fluid_probes, SPEC §10): [{"point", "v", "p"}, ...],
 // the flow at each probe (bubble included; a probe just off the meshed boundary read at
 // its nearest boundary point); v and p null without a solution.
