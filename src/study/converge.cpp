@@ -166,9 +166,12 @@ void run_penalty_check(Study& study, SetupCache& cache, const ConvergeOptions& o
 
 // converge's default ε rule for a penalised case that states none: "layer" (the
 // Brinkman layer resolved at every level, io/case.hpp), as overrides of every level.
+// Not for the fluid alone: without a structure χ = 0 and ε plays no part.
 std::vector<std::string> with_default_eps_rule(const Case& base, std::vector<std::string> overrides,
                                                const ConvergeOptions& options) {
-  if (!base.fluid || base.fluid->method != "penalised" || base.coupling.eps_rule_given) return overrides;
+  if (!base.fluid || base.fluid->method != "penalised" || base.coupling.eps_rule_given ||
+      base.structure.shape == "none")
+    return overrides;
   const double eps = layer_eps(base.fluid->mu, base.fluid->size_near());
   overrides.push_back("coupling.eps_rule=layer");
   overrides.push_back("coupling.eps=" + shortest(eps));

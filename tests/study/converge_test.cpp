@@ -235,6 +235,22 @@ TEST(Converge, ThePenaltysErrorBarCoversTheBodyFittedLoad) {
   fs::remove_all(dir);
 }
 
+// The fluid alone has no penalty (χ = 0): no ε rule announced, the case's ε kept, no
+// penalty check.
+TEST(Converge, TheFluidAloneNeedsNoEpsRule) {
+  const fs::path dir = testing::scratch_dir("converge-fluid-alone");
+  const std::string dfg = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/dfg-2d1.toml'";
+  const testing::CliRun r = testing::run_cli("converge " + dfg + " --levels 3 --set fluid.h=0.05 --set fluid.h_near=0.04 "
+                                             "--set output.png=false --set output.vtu=false --out study", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("[eps]"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(testing::slurp(dir / "study/summary.json"));
+  for (const auto& level : j["levels"]) EXPECT_EQ(level["eps"], 1e-5);
+  EXPECT_TRUE(j["penalty_check"].is_null());
+  EXPECT_TRUE(j["quantities"].contains("obstacle_1_force_x"));
+  fs::remove_all(dir);
+}
+
 // The penalty check continues on the finest level's fluid (issue 27's cost target):
 // the same near region, its far-field factorisation not redone (χ = 0 there, whatever
 // ε), no far-field expansion (the check draws nothing); and it lands where a run of
