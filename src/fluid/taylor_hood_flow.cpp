@@ -24,21 +24,29 @@ double TaylorHoodFlow::residual_norm(const Eigen::VectorXd& U) {
   return system_.free_part(R_).norm();
 }
 
-Eigen::VectorXd TaylorHoodFlow::newton_direction(bool picard) {
+void TaylorHoodFlow::factorize_at(const Eigen::VectorXd& U, bool picard) {
   Stopwatch clock;
   system_.set_picard(picard);
-  system_.assemble(U_, true, R_);
+  system_.assemble(U, true, R_);
   system_.set_picard(false);
   timing_.assembly += clock.elapsed();
   clock = Stopwatch();
   if (!analysed_) solver_->analyze(system_.jacobian()), analysed_ = true;
   solver_->factorize(system_.jacobian());
-  factors_ = Factors{!picard, U_, system_.mass(), system_.revision()};
+  factors_ = Factors{!picard, U, system_.mass(), system_.revision()};
   timing_.factorization += clock.elapsed();
-  clock = Stopwatch();
+}
+
+Eigen::VectorXd TaylorHoodFlow::back_substitute() {
+  const Stopwatch clock;
   Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
   timing_.solve += clock.elapsed();
   return delta;
+}
+
+Eigen::VectorXd TaylorHoodFlow::newton_direction(bool picard) {
+  factorize_at(U_, picard);
+  return back_substitute();
 }
 
 // Armijo's test on the full step and its halves down to a sixteenth; where none passes
@@ -72,11 +80,8 @@ bool TaylorHoodFlow::factors_usable() const {
 bool TaylorHoodFlow::chord_step(double& r, double scale) {
   // Kept below a half, factors kept below a tenth: measured on DFG 2D-2 (docs/performance.md).
   constexpr double kAccept = 0.5, kKeep = 0.1;
-  Stopwatch clock;
-  const Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
-  timing_.solve += clock.elapsed();
   Eigen::VectorXd trial = U_;
-  system_.add_free(delta, 1.0, trial);
+  system_.add_free(back_substitute(), 1.0, trial);
   const double r_trial = residual_norm(trial) / scale;
   if (!(r_trial <= kAccept * r)) {
     factors_.newton = false;
@@ -98,10 +103,7 @@ bool TaylorHoodFlow::factors_state(Eigen::VectorXd& U, double& mass) const {
 void TaylorHoodFlow::restore_factors(const Eigen::VectorXd& U, double mass) {
   const Eigen::VectorXd history = Eigen::VectorXd::Zero(2 * system_.velocity_nodes());
   system_.set_inertia(mass, history);  // the Jacobian does not depend on the history
-  const Eigen::VectorXd u = U_;
-  U_ = U;
-  newton_direction(false);
-  U_ = u;
+  factorize_at(U, false);               // (R_ is assembled again by the next solve)
 }
 
 const Eigen::VectorXd& TaylorHoodFlow::solve() {

@@ -88,6 +88,10 @@ class TaylorHoodFlow {
 
  private:
   double residual_norm(const Eigen::VectorXd& U);
+  // Assembles R(U) into R_ and the Jacobian at U (Newton's, or Picard's), factorises it.
+  void factorize_at(const Eigen::VectorXd& U, bool picard);
+  // δ = −J⁻¹ R_ with the current factors.
+  Eigen::VectorXd back_substitute();
   // J δ = −R(U_) (Newton's J, or Picard's).
   Eigen::VectorXd newton_direction(bool picard);
   // One step from U_ at relative residual r; returns the new one.

@@ -154,7 +154,7 @@ class TaylorHoodMarch final : public FluidMarch {
     int step;
     Eigen::VectorXd u_n, u_nm1;
     Eigen::VectorXd factors_at;  // empty: no reusable factors
-    double factors_mass;
+    double factors_mass = 0;
   };
   std::optional<Restored> restored_;
 };
