@@ -89,8 +89,9 @@ check-instrumented: instrumented-suite fuzz-smoke
 # The name it had before the two instrumented builds became one.
 test-sanitize: check-instrumented
 
+# The three side by side: they took 4.6 + 67 + 121 s one after the other.
 fuzz-smoke: instrumented-build
-	@cd $(INSTRUMENTED) && ctest --output-on-failure -L fuzz
+	@cd $(INSTRUMENTED) && ctest --output-on-failure -j $(JOBS) -L fuzz
 
 # libFuzzer targets (fuzz/): make fuzz runs each for FUZZ_RUNS inputs
 # (docs/reliability.md). fuzz_cli works in its own scratch directory: its corpus

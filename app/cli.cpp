@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
+#include "fluid/petsc_solver.hpp"
 #include "io/case.hpp"
 #include "run/provenance.hpp"
 #include "run/run_case.hpp"
@@ -184,6 +185,13 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
   }
   if (app.get_subcommands().empty()) {
     err << app.help();
+    return 2;
+  }
+  // Each rank would run the whole case and write the same files: refused until the
+  // fluid is distributed (SPEC §13; issue 32).
+  if (const int ranks = launched_ranks(); ranks > 1) {
+    err << "fsicontact: started on " << ranks << " MPI ranks; this build runs on one: start it without mpirun "
+        << "(fluid.linear_solver = \"petsc-mumps\" and \"petsc-iterative\" run on one rank)\n";
     return 2;
   }
   install_interrupt_handler();

@@ -34,3 +34,19 @@ find_library(MUMPS_LIBRARY dmumps_seq REQUIRED)
 find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
 find_library(GMSH_LIBRARY gmsh REQUIRED)
 
+
+# PETSc (libpetsc-real-dev: OpenMPI, parallel MUMPS, hypre), the fluid's parallel and
+# iterative linear solvers (SPEC §13), in a plugin loaded by the runs that ask for it
+# (fluid/petsc_plugin.hpp). Optional: without it those runs fail naming the package.
+# Not in the instrumented build: the plugin must be opened with RTLD_DEEPBIND (the
+# program's sequential MUMPS brings a stub MPI_Init that PETSc would otherwise call),
+# which AddressSanitizer refuses.
+pkg_check_modules(PETSC IMPORTED_TARGET PETSc)
+if(PETSC_FOUND)
+  pkg_check_modules(MPI_C IMPORTED_TARGET mpi-c)  # PETSc's pkg-config file omits its MPI
+endif()
+if(PETSC_FOUND AND MPI_C_FOUND AND NOT FSICONTACT_SANITIZE AND NOT FSICONTACT_FUZZ)
+  option(FSICONTACT_PETSC "Build the PETSc plugin (fluid.linear_solver = petsc-*)" ON)
+else()
+  set(FSICONTACT_PETSC OFF)
+endif()

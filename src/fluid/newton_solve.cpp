@@ -17,8 +17,8 @@ void set_zero(FluidSolution& s) {
 }  // namespace
 
 NewtonSolve::NewtonSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing,
-                         FluidSolution& out, const NewtonOptions& options)
-    : assembler_(assembler), whole_(assembler, solver, timing, out), timing_(timing), out_(out), options_(options) {
+                         FluidSolution& out, const NewtonOptions& options, const LinearSolverOptions& linear)
+    : assembler_(assembler), whole_(assembler, solver, timing, out, linear), timing_(timing), out_(out), options_(options) {
   assembler_.prescribed_fields(w_);
   set_zero(w_);
   convection_ = std::make_shared<NewtonConvection>(options.rho, assembler.mesh(), w_);

@@ -55,7 +55,7 @@ class NewtonSolve final : public StokesSolveStrategy {
   // Adds the convection term to `assembler` (before any solve). `solver` must factor
   // unsymmetric matrices (PenalisedStokes::solve refuses the others).
   NewtonSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out,
-              const NewtonOptions& options);
+              const NewtonOptions& options, const LinearSolverOptions& linear = {});
   void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) override;
   std::string name() const override { return whole_.name(); }
   bool needs_symmetry() const override { return whole_.needs_symmetry(); }

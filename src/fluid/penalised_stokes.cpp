@@ -1,5 +1,6 @@
 #include "fluid/penalised_stokes.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -23,7 +24,14 @@ void PenalisedStokes::set_factorization(FluidFactorization f, double far_factor_
   if (f == FluidFactorization::schur)
     strategy_ = std::make_unique<SubstructuredSolve>(assembler_, solver_, timing_, solution_, far_factor_budget_mb);
   else
-    strategy_ = std::make_unique<WholeSolve>(assembler_, solver_, timing_, solution_);
+    strategy_ = std::make_unique<WholeSolve>(assembler_, solver_, timing_, solution_, linear_options_);
+}
+
+void PenalisedStokes::set_linear_solver(const std::string& solver, const LinearSolverOptions& options) {
+  if (solved_once_ || newton_) throw std::logic_error("PenalisedStokes::set_linear_solver after a solve or Newton's set-up");
+  solver_ = solver;
+  linear_options_ = options;
+  set_factorization(FluidFactorization::whole, INFINITY);
 }
 
 void PenalisedStokes::set_viscous_form(ViscousForm form) {
@@ -34,7 +42,7 @@ void PenalisedStokes::set_navier_stokes(const NewtonOptions& options) {
   if (solved_once_) throw std::logic_error("PenalisedStokes::set_navier_stokes after a solve");
   if (factorization_ != FluidFactorization::whole)
     throw std::invalid_argument("Navier–Stokes is solved on the whole factorisation only");
-  auto newton = std::make_unique<NewtonSolve>(assembler_, solver_, timing_, solution_, options);
+  auto newton = std::make_unique<NewtonSolve>(assembler_, solver_, timing_, solution_, options, linear_options_);
   newton_ = newton.get();
   strategy_ = std::move(newton);
   ++version_;

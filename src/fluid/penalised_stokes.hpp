@@ -67,6 +67,10 @@ class PenalisedStokes {
   // solver, which must factor unsymmetric matrices. Before the first solve; the
   // `schur` factorisation is refused (std::invalid_argument).
   void set_navier_stokes(const NewtonOptions& options);
+  // The linear solver by name (make_sparse_solver: e.g. "petsc-iterative", SPEC §13)
+  // and its controls, on the whole factorisation. Before the first solve and before
+  // set_navier_stokes (std::logic_error otherwise).
+  void set_linear_solver(const std::string& solver, const LinearSolverOptions& options);
   // Newton's report (null for Stokes).
   const FluidNewtonReport* newton() const { return newton_ ? &newton_->report() : nullptr; }
   // A further term of the operator (mini_element.hpp ElementTerm: convection for
@@ -139,6 +143,7 @@ class PenalisedStokes {
 
   StokesAssembler assembler_;
   std::string solver_;
+  LinearSolverOptions linear_options_;
   FluidFactorization factorization_ = FluidFactorization::whole;
   std::unique_ptr<StokesSolveStrategy> strategy_;
   const NewtonSolve* newton_ = nullptr;  // the strategy, for Navier–Stokes

@@ -14,6 +14,7 @@
 
 #include "common/errors.hpp"
 #include "fluid/mumps_handle.hpp"
+#include "fluid/petsc_solver.hpp"
 
 namespace fsi {
 
@@ -340,8 +341,9 @@ std::unique_ptr<SparseDirectSolver> make_mumps_solver(std::vector<int> order) {
   return std::make_unique<MumpsSolver>("mumps-given-order", MumpsSolver::Ordering::given, std::move(order));
 }
 
-std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) {
+std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name, const LinearSolverOptions& options) {
   using Ordering = MumpsSolver::Ordering;
+  if (name == "petsc-mumps" || name == "petsc-iterative") return std::make_unique<PetscSolver>(name, options);
   if (name == "mumps-metis") return std::make_unique<MumpsSolver>(name, Ordering::metis);
   if (name == "mumps-pord") return std::make_unique<MumpsSolver>(name, Ordering::pord);
   if (name == "mumps-amd") return std::make_unique<MumpsSolver>(name, Ordering::amd);
@@ -353,6 +355,7 @@ std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name) 
   if (name == "eigen-lu") return std::make_unique<EigenSolver<EigenLu>>(name);
   std::string known;
   for (const auto& n : sparse_solver_names()) known += (known.empty() ? "" : ", ") + n;
+  known += ", petsc-mumps, petsc-iterative";
   throw std::invalid_argument("unknown sparse solver '" + name + "'; known: " + known);
 }
 

@@ -26,6 +26,12 @@ struct FactorStatistics {
   double flops = -1;
 };
 
+// An iterative solver's controls (fluid.linear_tol, fluid.linear_max_iterations).
+struct LinearSolverOptions {
+  double tol = 1e-10;  // ‖b − A x‖ ≤ tol ‖b‖
+  int max_iterations = 1000;
+};
+
 class SparseDirectSolver {
  public:
   virtual ~SparseDirectSolver() = default;
@@ -43,6 +49,15 @@ class SparseDirectSolver {
   // Whether it factors symmetric matrices only (it reads one triangle, or pivots
   // symmetrically: LDLᵀ); an unsymmetric K (convection) needs a solver that does not.
   virtual bool needs_symmetry() const = 0;
+  // Before analyze(): per unknown, 1 for a pressure's (a block preconditioner's
+  // split), and whether the values will stay symmetric (petsc_solver.hpp); the other
+  // solvers do not need either.
+  virtual void describe_system(std::vector<char> /*is_pressure*/, bool /*symmetric*/) {}
+  // An iterative solver's iterations, per solve (null: a direct solver).
+  virtual const std::vector<int>* iteration_counts() const { return nullptr; }
+  // The relative residual ‖A x − b‖/‖b‖ a solve must reach for its caller to accept
+  // it (the callers check it: a nearly singular matrix can factorise and give garbage).
+  virtual double residual_tolerance() const { return 1e-8; }
 
   int analyses() const { return analyses_; }
   int factorizations() const { return factorizations_; }
@@ -73,7 +88,9 @@ inline const char* const kDefaultSparseSolver = "mumps-metis";
 // the MUMPS, CHOLMOD and Eigen LDLᵀ ones; "umfpack", "umfpack-metis" (LU, its
 // symmetric strategy an ordering choice), "eigen-lu" and "mumps-lu" (MUMPS unsymmetric,
 // SYM = 0, METIS on the symmetric pattern) factor any matrix.
-std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name);
+// "petsc-mumps", "petsc-iterative": through PETSc (petsc_solver.hpp), with `options`.
+std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name,
+                                                       const LinearSolverOptions& options = {});
 
 // MUMPS as "mumps-metis" but with the elimination order given (order[k] = the k-th
 // pivot; a permutation of the unknowns), e.g. to keep a dense block last.

@@ -338,4 +338,11 @@ const std::vector<int>& StokesAssembler::dof_rank() {
   return dof_rank_;
 }
 
+std::vector<char> StokesAssembler::pressure_unknowns() const {
+  const int nv = mesh_.num_vertices();
+  std::vector<char> p(free_.size());
+  for (std::size_t k = 0; k < free_.size(); ++k) p[k] = free_[k] >= 2 * nv;
+  return p;
+}
+
 }  // namespace fsi

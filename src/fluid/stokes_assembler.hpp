@@ -84,6 +84,8 @@ class StokesAssembler {
   // otherwise (PenalisedStokes::solve).
   bool symmetric() const { return symmetric_; }
   int unknowns() const { return static_cast<int>(free_.size()); }
+  // Per unknown, 1 for a pressure's (the saddle point's second field).
+  std::vector<char> pressure_unknowns() const;
   long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
 
   // K and rhs for χ and ε over all triangles.

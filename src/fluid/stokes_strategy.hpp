@@ -27,6 +27,8 @@ struct FluidTiming {
   double far_factorization = 0, expansion = 0;
   int regions = 0;
   int far_refactorizations = 0;  // expansions that refactorised a released far field
+  // An iterative linear solver's iterations, per solve (empty: a direct solver).
+  std::vector<int> linear_iterations;
 };
 
 // Where a substructured solve stands (see StokesSolveStrategy::near_region_state).
@@ -89,13 +91,16 @@ class StokesSolveStrategy {
 
 class WholeSolve final : public StokesSolveStrategy {
  public:
-  WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out);
+  WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out,
+             const LinearSolverOptions& options = {});
   void solve(const Eigen::VectorXd& chi, double eps, SampledTriangles sampled) override;
   std::string name() const override { return solver_->name(); }
   bool needs_symmetry() const override { return solver_->needs_symmetry(); }
   void new_run() override { assembler_.forget_assembly(); }
 
  private:
+  Eigen::VectorXd solve_counted(const Eigen::VectorXd& rhs);
+
   StokesAssembler& assembler_;
   std::unique_ptr<SparseDirectSolver> solver_;
   FluidTiming& timing_;

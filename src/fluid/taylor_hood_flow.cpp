@@ -12,7 +12,7 @@
 namespace fsi {
 
 TaylorHoodFlow::TaylorHoodFlow(TaylorHoodSystem& system, const TaylorHoodOptions& options)
-    : system_(system), options_(options), solver_(make_sparse_solver(options.solver)) {
+    : system_(system), options_(options), solver_(make_sparse_solver(options.solver, options.linear)) {
   U_ = Eigen::VectorXd::Zero(system.dofs());
   U_nm1_ = U_;
 }
@@ -31,7 +31,11 @@ void TaylorHoodFlow::factorize_at(const Eigen::VectorXd& U, bool picard) {
   system_.set_picard(false);
   timing_.assembly += clock.elapsed();
   clock = Stopwatch();
-  if (!analysed_) solver_->analyze(system_.jacobian()), analysed_ = true;
+  if (!analysed_) {
+    solver_->describe_system(system_.pressure_unknowns(), false);
+    solver_->analyze(system_.jacobian());
+    analysed_ = true;
+  }
   solver_->factorize(system_.jacobian());
   factors_ = Factors{!picard, U, system_.mass(), system_.revision()};
   timing_.factorization += clock.elapsed();
@@ -41,6 +45,7 @@ Eigen::VectorXd TaylorHoodFlow::back_substitute() {
   const Stopwatch clock;
   Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
   timing_.solve += clock.elapsed();
+  if (const std::vector<int>* counts = solver_->iteration_counts()) timing_.linear_iterations.push_back(counts->back());
   return delta;
 }
 

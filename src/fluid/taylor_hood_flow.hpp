@@ -35,12 +35,14 @@ namespace fsi {
 // Where a solve's time goes (summary.json's fluid.assembly_s, ...), over the run.
 struct TaylorHoodTiming {
   double assembly = 0, factorization = 0, solve = 0;  // seconds; the analysis is in factorization
+  std::vector<int> linear_iterations;  // an iterative linear solver's, per solve
 };
 
 struct TaylorHoodOptions {
   double tol = 1e-10;
   int max_steps = 30;
   std::string solver = kNavierStokesSolver;  // factors unsymmetric matrices
+  LinearSolverOptions linear;                // an iterative solver's controls
   bool reuse_factors = true;                 // chord steps in time steps (above)
 };
 

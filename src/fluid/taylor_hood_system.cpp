@@ -190,4 +190,10 @@ void TaylorHoodSystem::add_free(const Eigen::VectorXd& part, double scale, Eigen
   for (int k = 0; k < unknowns(); ++k) full[free_[k]] += scale * part[k];
 }
 
+std::vector<char> TaylorHoodSystem::pressure_unknowns() const {
+  std::vector<char> p(free_.size());
+  for (std::size_t k = 0; k < free_.size(); ++k) p[k] = free_[k] >= 2 * nn_;
+  return p;
+}
+
 }  // namespace fsi

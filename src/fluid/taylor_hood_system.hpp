@@ -71,6 +71,8 @@ class TaylorHoodSystem {
   const Eigen::SparseMatrix<double>& jacobian() const { return J_; }
   // The free part of a dof vector, and a free part added back into one.
   Eigen::VectorXd free_part(const Eigen::VectorXd& full) const;
+  // Per free dof, 1 for a pressure's (the saddle point's second field).
+  std::vector<char> pressure_unknowns() const;
   void add_free(const Eigen::VectorXd& part, double scale, Eigen::VectorXd& full) const;
 
  private:

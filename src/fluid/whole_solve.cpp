@@ -4,8 +4,9 @@
 
 namespace fsi {
 
-WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out)
-    : assembler_(assembler), solver_(make_sparse_solver(solver)), timing_(timing), out_(out) {}
+WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, FluidTiming& timing, FluidSolution& out,
+                       const LinearSolverOptions& options)
+    : assembler_(assembler), solver_(make_sparse_solver(solver, options)), timing_(timing), out_(out) {}
 
 // Assembles K (incrementally), factorises all of it (one symbolic analysis for the
 // run: the pattern never changes), solves.
@@ -20,6 +21,7 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
   {
     const Stopwatch clock;
     if (!analysed_) {
+      solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
       solver_->analyze(K);
       analysed_ = true;
       timing_.analysis += clock.elapsed();
@@ -30,17 +32,32 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
     ++timing_.factorizations;
   }
   const Stopwatch clock;
-  const Eigen::VectorXd x = solver_->solve(rhs);
+  const Eigen::VectorXd x = solve_counted(rhs);
   if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
   // A nearly singular matrix can factorise without a zero pivot and give garbage:
-  // one product with K (~1% of a factorisation) catches it. The solvers reach
+  // one product with K (~1% of a factorisation) catches it. The direct solvers reach
   // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
   const double residual = (K * x - rhs).norm(), scale = rhs.norm();
-  if (!(residual <= 1e-8 * scale))
+  if (!(residual <= solver_->residual_tolerance() * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
                         ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
   assembler_.fields(x, chi, eps, out_);
   timing_.solve += clock.elapsed();
+}
+
+// The solve, its iterations recorded (an iterative solver's) also when it fails.
+Eigen::VectorXd WholeSolve::solve_counted(const Eigen::VectorXd& rhs) {
+  const std::vector<int>* counts = solver_->iteration_counts();
+  const std::size_t before = counts ? counts->size() : 0;
+  struct Record {
+    const std::vector<int>* counts;
+    std::size_t before;
+    std::vector<int>& out;
+    ~Record() {
+      if (counts) out.insert(out.end(), counts->begin() + static_cast<std::ptrdiff_t>(before), counts->end());
+    }
+  } record{counts, before, timing_.linear_iterations};
+  return solver_->solve(rhs);
 }
 
 }  // namespace fsi

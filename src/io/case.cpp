@@ -171,6 +171,29 @@ void read_obstacle(const toml::table& root, const Origin& origin, Case& c, std::
   s.reject_unknown();
 }
 
+// SPEC §13's keys: the linear solver and an iterative one's controls.
+void read_linear_solver(Section& s, const Origin& origin, FluidParams& p, bool schur_given) {
+  p.linear_solver = s.choice("linear_solver", p.linear_solver, {"mumps", "petsc-mumps", "petsc-iterative"});
+  p.linear_tol = s.number("linear_tol", p.linear_tol, {1e-15, 1e-2, true, true});
+  p.linear_max_iterations = s.integer("linear_max_iterations", p.linear_max_iterations, 1, 100000);
+  if (p.linear_solver == "mumps") return;
+  // The substructured solve condenses the far field with MUMPS's Schur complement,
+  // which PETSc does not offer.
+  if (schur_given)
+    fail(origin, "fluid.factorization", "= \"schur\" needs fluid.linear_solver = \"mumps\"",
+         "\"whole\" (the default with a PETSc solver)");
+  // The split's Schur approximation (petsc_plugin.cpp) ignores the convection: GMRES
+  // broke down or took 150–500 iterations on a Reynolds-25 cavity (measured); a
+  // convection-aware one (PCD, LSC) is not built yet. Taylor–Hood's is not tested.
+  if (p.linear_solver == "petsc-iterative" && (p.navier_stokes() || p.element == "taylor-hood"))
+    fail(origin, "fluid.linear_solver", "= \"petsc-iterative\" is offered for the mini element's Stokes only",
+         "\"mumps\" or \"petsc-mumps\" with fluid.model = \"navier-stokes\" or fluid.element = \"taylor-hood\"");
+  if (p.method == "body-fitted")
+    fail(origin, "fluid.linear_solver", "= \"" + p.linear_solver + "\" is not offered with fluid.method = \"body-fitted\"",
+         "\"mumps\"");
+  p.factorization = "whole";
+}
+
 // SPEC §10's keys: the model, its density and Newton's controls, the viscous form.
 void read_fluid_model(Section& s, const Origin& origin, FluidParams& p) {
   const bool schur_given = s.has("factorization") && p.factorization == "schur";
@@ -222,7 +245,9 @@ void read_fluid(const toml::table* fluid, const Origin& origin, const std::strin
   s.band("band", p.band, p.band_box);
   p.h_obstacles = refined_size("h_obstacles", p.h_obstacles, "none");
   p.method = s.choice("method", p.method, {"penalised", "body-fitted"});
+  const bool schur_given = s.has("factorization") && p.factorization == "schur";
   read_fluid_model(s, origin, p);
+  read_linear_solver(s, origin, p, schur_given);
   s.reject_unknown();
   c.fluid = p;
 }
@@ -476,7 +501,8 @@ toml::table fluid_toml(const FluidParams& f) {
                  {"keep_far_factors_mb", f.keep_far_factors_mb}, {"h_near", f.h_near},
                  {"h_obstacles", f.h_obstacles}, {"method", f.method},
                  {"model", f.model}, {"viscous_form", f.viscous_form}, {"element", f.element}, {"newton_tol", f.newton_tol},
-                 {"newton_max_steps", f.newton_max_steps}};
+                 {"newton_max_steps", f.newton_max_steps}, {"linear_solver", f.linear_solver},
+                 {"linear_tol", f.linear_tol}, {"linear_max_iterations", f.linear_max_iterations}};
   insert_load(ft, "Vmax", f.Vmax, f.Vmax_expression);
   if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given
   if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});

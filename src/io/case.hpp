@@ -97,6 +97,13 @@ struct FluidParams {
   // "schur": the far field factorised once per run, only the region around the
   // structure per χ; "whole": all of K per χ (PenalisedStokes, FluidFactorization).
   std::string factorization = "schur";
+  // SPEC §13: "mumps" (sequential MUMPS, called directly), "petsc-mumps" (MUMPS
+  // through PETSc) or "petsc-iterative" (GMRES with a Schur-complement field split:
+  // fluid/petsc_plugin.cpp) to the relative residual linear_tol in at most
+  // linear_max_iterations iterations. Both PETSc solvers take the whole factorisation.
+  std::string linear_solver = "mumps";
+  double linear_tol = 1e-10;
+  int linear_max_iterations = 1000;
   // With "schur": far fields whose factorisation takes more memory than this (MB,
   // MUMPS's figure) are not kept between expansions, each expansion refactorises
   // them (one more far-field factorisation per run for about half the peak memory).

@@ -111,6 +111,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   s.stokes = std::make_unique<PenalisedStokes>(
       *s.mesh, f.mu, eps, fluid_body_force(f), box_boundary_conditions(*s.mesh, f),
       f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
+  if (f.linear_solver != "mumps") s.stokes->set_linear_solver(f.linear_solver, {f.linear_tol, f.linear_max_iterations});
   set_fluid_model(*s.stokes, f, c.time && c.time->convection == "semi-implicit");
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
@@ -198,6 +199,16 @@ Json flow_json(const Case& c) {
   return j;
 }
 
+// SPEC §13: fluid.linear_solver as given, and an iterative solver's iterations per solve.
+void add_linear_solver_json(Json& j, const std::string& solver, const std::vector<int>& iterations) {
+  j["linear_solver"] = solver.rfind("petsc-", 0) == 0 ? solver : "mumps";
+  if (solver != "petsc-iterative") return;
+  j["linear_iterations"] = iterations;
+  long total = 0;
+  for (int n : iterations) total += n;
+  j["linear_iterations_total"] = total;
+}
+
 Json fluid_json(const PenalisedStokes& stokes) {
   const FluidTiming& t = stokes.timing();
   Json j = {{"method", "penalised"},  // fluid.method (run/body_fitted_problem.cpp writes the other)
@@ -213,6 +224,7 @@ Json fluid_json(const PenalisedStokes& stokes) {
             {"factorization_s", t.factorization},
             {"solve_s", t.solve}};
   j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
+  add_linear_solver_json(j, stokes.solver_name(), t.linear_iterations);
   if (const FluidNewtonReport* n = stokes.newton()) j["newton"] = newton_json(*n);
   // The substructured solve: far-field factorisations (one per near region; their
   // time is part of factorization_s), the expansions (part of solve_s), the last

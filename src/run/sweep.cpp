@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
 #include "common/timer.hpp"
+#include "fluid/petsc_solver.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
 #include "run/provenance.hpp"
@@ -185,6 +186,7 @@ SweepResult run_sweep(const CaseSource& source, const std::string& rows_csv, con
   write_atomically((fs::path(result.out_dir) / "table.csv").string(), [&](std::ostream& o) { o << sweep_table_csv(rows); });
   Json summary = sweep_summary(source.name(), rows_csv, rows, result, result.interrupted_by ? "interrupted" : "complete");
   summary["program"] = provenance_json();  // what made it (issue 31)
+  summary["ranks"] = launched_ranks();       // SPEC §13
   write_json((fs::path(result.out_dir) / "summary.json").string(), summary);
   return result;
 }

@@ -40,7 +40,10 @@ TaylorHoodSetup make_taylor_hood(const Case& c, Mesh mesh, double t) {
                               f.navier_stokes() ? f.rho : 0.0};
   s.system = std::make_unique<TaylorHoodSystem>(*s.geometry, model, fluid_body_force(f, t),
                                                 box_boundary_conditions(*s.mesh, f, t));
-  s.flow = std::make_unique<TaylorHoodFlow>(*s.system, TaylorHoodOptions{f.newton_tol, f.newton_max_steps});
+  TaylorHoodOptions options{f.newton_tol, f.newton_max_steps};
+  if (f.linear_solver != "mumps") options.solver = f.linear_solver;
+  options.linear = {f.linear_tol, f.linear_max_iterations};
+  s.flow = std::make_unique<TaylorHoodFlow>(*s.system, options);
   return s;
 }
 
@@ -83,6 +86,7 @@ Json taylor_hood_json(const TaylorHoodSetup& s) {
             {"factorization_s", t.factorization},
             {"solve_s", t.solve},
             {"factorization", "whole"}};
+  add_linear_solver_json(j, flow.solver_name(), t.linear_iterations);
   if (s.system->model().rho > 0) j["newton"] = newton_json(flow.report());
   return j;
 }

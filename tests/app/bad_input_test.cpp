@@ -203,6 +203,11 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"navier_stokes_on_the_schur_path", kValid + "[fluid]\nmodel = \"navier-stokes\"\nrho = 1\nfactorization = \"schur\"\n", "", {"fluid.factorization", "symmetric", "\"whole\""}},
       {"newton_tol_zero", kValid + "[fluid]\n", "--set fluid.newton_tol=0", {"fluid.newton_tol", "[1e-15, 0.01]"}},
       {"newton_max_steps_zero", kValid + "[fluid]\n", "--set fluid.newton_max_steps=0", {"fluid.newton_max_steps", "[1, 1000]"}},
+      {"petsc_on_the_schur_path", kValid + "[fluid]\nlinear_solver = \"petsc-mumps\"\nfactorization = \"schur\"\n", "", {"fluid.factorization", "\"mumps\"", "\"whole\""}},
+      {"petsc_iterative_for_navier_stokes", kValid + "[fluid]\nmodel = \"navier-stokes\"\nrho = 1\nlinear_solver = \"petsc-iterative\"\n", "", {"fluid.linear_solver", "Stokes only", "\"petsc-mumps\""}},
+      {"linear_solver_unknown", kValid + "[fluid]\n", "--set fluid.linear_solver=\"hypre\"", {"fluid.linear_solver", "petsc-iterative"}},
+      {"linear_tol_too_large", kValid + "[fluid]\n", "--set fluid.linear_tol=0.5", {"fluid.linear_tol", "[1e-15, 0.01]"}},
+      {"linear_max_iterations_zero", kValid + "[fluid]\n", "--set fluid.linear_max_iterations=0", {"fluid.linear_max_iterations", "[1, 100000]"}},
       {"viscous_form_unknown", kValid + "[fluid]\n", "--set fluid.viscous_form=laplace", {"fluid.viscous_form", "\"symmetric\", \"gradient\""}},
       // SPEC §12: [time], so far for the fluid alone.
       {"time_dt_zero", kValid + "[fluid]\n", "--set structure.shape=none --set fluid.rho=1 --set time.dt=0 --set time.t_end=1", {"time.dt", "[1e-30, 1e+30]"}},

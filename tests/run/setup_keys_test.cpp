@@ -65,7 +65,8 @@ std::string other_value(const std::string& key) {
                                                              {"structure.rho", "1000"},
                                                              {"structure.v0", "[0.1, 0]"},
                                                              {"structure.mass", "consistent"},
-                                                             {"coupling.reuse", "3"}};
+                                                             {"coupling.reuse", "3"},
+                                                             {"fluid.linear_solver", "petsc-mumps"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "fluid/petsc_solver.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "run/provenance.hpp"
@@ -100,6 +101,7 @@ Json RunOutputs::finish(Json summary) {
     summary["failure"] = solve_failure + "writing the outputs: " + failure();
   }
   summary["program"] = provenance_json();  // what made it (issue 31)
+  summary["ranks"] = launched_ranks();       // SPEC §13
   write_json(path("summary.json"), summary);
   return summary;
 }

@@ -1,0 +1,246 @@
+// libfsicontact_petsc.so: the fluid's linear systems through PETSc (petsc_plugin.hpp).
+//
+// "petsc-mumps": KSPPREONLY with MUMPS's LU (LDLᵀ when symmetric), PETSc's interface
+// to the same library the default path calls directly, so that it can run on several
+// ranks. "petsc-iterative": GMRES, right-preconditioned (so that the tolerance is on
+// the true residual ‖b − A x‖ / ‖b‖), by a Schur-complement field split of the saddle
+// point [A Bᵀ; B −C] (Elman, Silvester, Wathen 2014, ch. 9): the velocity block, which
+// holds the penalty (1/ε) χ M, by one V-cycle of hypre's BoomerAMG; the Schur
+// complement by BoomerAMG on S_p = −C − B diag(A)⁻¹ Bᵀ ("selfp"), which follows the
+// penalty: where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
+// matrix would be off by 1/ε (measured: docs/performance.md).
+//
+// The defaults are set on the objects before KSPSetFromOptions, and the split's inner
+// solvers' in PETSc's options database unless given there, so that PETSC_OPTIONS can
+// change any of them: under the prefix "fluid_" for the iterative solver (e.g.
+// "-fluid_ksp_monitor", "-fluid_fieldsplit_u_pc_type gamg"), "fluid_direct_" for MUMPS.
+#include <petscksp.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "fluid/petsc_plugin.hpp"
+
+namespace fsi {
+namespace {
+
+// The first message of the last error (PETSc's own words: what, where), recorded by
+// the error handler; PETSc then returns the code up the stack, printing nothing.
+std::string last_message;
+
+PetscErrorCode record_error(MPI_Comm, int, const char* function, const char*, PetscErrorCode code,
+                            PetscErrorType type, const char* message, void*) {
+  if (type == PETSC_ERROR_INITIAL) last_message = std::string(message ? message : "") + " (in " + function + ")";
+  return code;
+}
+
+std::string error_text(PetscErrorCode code, const char* call) {
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  std::string out = std::string("PETSc: ") + call + ": " + (text ? text : "error " + std::to_string(code));
+  if (!last_message.empty()) out += ": " + last_message;
+  last_message.clear();
+  return out;
+}
+
+// Each PETSc call: its error returned as text from the enclosing function.
+#define FSI_TRY(call)                                       \
+  do {                                                      \
+    const PetscErrorCode code_ = (call);                    \
+    if (code_) return error_text(code_, #call);             \
+  } while (0)
+
+struct Solver {
+  PetscSolverConfig config;
+  Mat A = nullptr;
+  Vec b = nullptr, x = nullptr;
+  KSP ksp = nullptr;
+  IS fields[2] = {nullptr, nullptr};
+  std::vector<PetscReal> history;
+};
+
+std::string set_default(const char* name, const char* value) {
+  PetscBool given = PETSC_FALSE;
+  FSI_TRY(PetscOptionsHasName(nullptr, nullptr, name, &given));
+  if (!given) FSI_TRY(PetscOptionsSetValue(nullptr, name, value));
+  return "";
+}
+
+// MUMPS's LU, or its LDLᵀ for symmetric values.
+std::string set_direct(KSP ksp, bool symmetric) {
+  PC pc;
+  FSI_TRY(KSPGetPC(ksp, &pc));
+  FSI_TRY(KSPSetType(ksp, KSPPREONLY));
+  FSI_TRY(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU));
+  FSI_TRY(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  return "";
+}
+
+// GMRES, right-preconditioned, by the upper block factorisation of the Schur split.
+std::string set_iterative(KSP ksp) {
+  PC pc;
+  FSI_TRY(KSPGetPC(ksp, &pc));
+  FSI_TRY(KSPSetType(ksp, KSPGMRES));
+  FSI_TRY(KSPSetPCSide(ksp, PC_RIGHT));
+  FSI_TRY(KSPGMRESSetRestart(ksp, 100));
+  FSI_TRY(PCSetType(pc, PCFIELDSPLIT));
+  FSI_TRY(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
+  FSI_TRY(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
+  FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr));
+  // The inner solvers exist only once the split is set up: their defaults go to the
+  // options database, which they read then.
+  const std::pair<const char*, const char*> inner[] = {
+      {"-fluid_fieldsplit_u_ksp_type", "preonly"}, {"-fluid_fieldsplit_u_pc_type", "hypre"},
+      {"-fluid_fieldsplit_u_pc_hypre_type", "boomeramg"}, {"-fluid_fieldsplit_p_ksp_type", "preonly"},
+      {"-fluid_fieldsplit_p_pc_type", "hypre"}, {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"}};
+  for (const auto& [name, value] : inner)
+    if (std::string e = set_default(name, value); !e.empty()) return e;
+  return "";
+}
+
+std::string initialise(int& rank, int& ranks) {
+  static std::string error = [] {
+    // Before PetscInitialize: the program handles its signals itself (common/interrupt),
+    // and PETSc's options left over are no one's concern at exit.
+    FSI_TRY(PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr));
+    FSI_TRY(PetscOptionsSetValue(nullptr, "-options_left", "no"));
+    FSI_TRY(PetscInitializeNoArguments());
+    FSI_TRY(PetscPushErrorHandler(record_error, nullptr));
+    std::atexit([] { PetscFinalize(); });
+    return std::string();
+  }();
+  if (!error.empty()) return error;
+  FSI_TRY(MPI_Comm_rank(PETSC_COMM_WORLD, &rank) ? PETSC_ERR_MPI : 0);
+  FSI_TRY(MPI_Comm_size(PETSC_COMM_WORLD, &ranks) ? PETSC_ERR_MPI : 0);
+  return "";
+}
+
+// The velocity's and the pressure's unknowns as index sets, named "u" and "p" (the
+// option prefixes fluid_fieldsplit_u_, fluid_fieldsplit_p_).
+std::string split_fields(Solver& s) {
+  std::vector<PetscInt> index[2];
+  for (std::size_t i = 0; i < s.config.is_pressure.size(); ++i)
+    index[s.config.is_pressure[i] ? 1 : 0].push_back(static_cast<PetscInt>(i));
+  if (index[0].empty() || index[1].empty()) return "the field split needs velocity and pressure unknowns";
+  PC pc;
+  FSI_TRY(KSPGetPC(s.ksp, &pc));
+  const char* names[2] = {"u", "p"};
+  for (int f = 0; f < 2; ++f) {
+    FSI_TRY(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(index[f].size()), index[f].data(),
+                            PETSC_COPY_VALUES, &s.fields[f]));
+    FSI_TRY(PCFieldSplitSetIS(pc, names[f], s.fields[f]));
+  }
+  return "";
+}
+
+void destroy(void* handle) {
+  auto* s = static_cast<Solver*>(handle);
+  if (!s) return;
+  KSPDestroy(&s->ksp);
+  MatDestroy(&s->A);
+  VecDestroy(&s->b);
+  VecDestroy(&s->x);
+  ISDestroy(&s->fields[0]);
+  ISDestroy(&s->fields[1]);
+  delete s;
+}
+
+std::string make_ksp(Solver& s) {
+  FSI_TRY(KSPCreate(PETSC_COMM_SELF, &s.ksp));
+  FSI_TRY(KSPSetOptionsPrefix(s.ksp, s.config.iterative ? "fluid_" : "fluid_direct_"));
+  const std::string e = s.config.iterative ? set_iterative(s.ksp) : set_direct(s.ksp, s.config.symmetric);
+  if (!e.empty()) return e;
+  FSI_TRY(KSPSetTolerances(s.ksp, s.config.tol, 0.0, 1e30, s.config.max_iterations));
+  s.history.resize(static_cast<std::size_t>(s.config.max_iterations) + 1);
+  FSI_TRY(KSPSetResidualHistory(s.ksp, s.history.data(), static_cast<PetscInt>(s.history.size()), PETSC_TRUE));
+  FSI_TRY(KSPSetFromOptions(s.ksp));
+  if (s.config.iterative) return split_fields(s);
+  return "";
+}
+
+void* create(const PetscSolverConfig& config, std::string& error) {
+  auto* s = new Solver{config};
+  error = make_ksp(*s);
+  if (error.empty()) return s;
+  destroy(s);
+  return nullptr;
+}
+
+std::string first_operator(Solver& s, const PetscCsr& m) {
+  FSI_TRY(MatCreate(PETSC_COMM_SELF, &s.A));
+  FSI_TRY(MatSetSizes(s.A, m.n, m.n, m.n, m.n));
+  FSI_TRY(MatSetType(s.A, MATSEQAIJ));
+  std::vector<PetscInt> rows(m.row_start, m.row_start + m.n + 1), cols(m.column, m.column + m.row_start[m.n]);
+  FSI_TRY(MatSeqAIJSetPreallocationCSR(s.A, rows.data(), cols.data(), m.value));
+  if (s.config.symmetric) {
+    FSI_TRY(MatSetOption(s.A, MAT_SYMMETRIC, PETSC_TRUE));
+    FSI_TRY(MatSetOption(s.A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+  }
+  FSI_TRY(MatCreateVecs(s.A, &s.x, &s.b));
+  return "";
+}
+
+// The values of the pattern fixed by the first call, in its order.
+std::string update_values(Solver& s, const PetscCsr& m) {
+  PetscScalar* a = nullptr;
+  FSI_TRY(MatSeqAIJGetArray(s.A, &a));
+  std::copy(m.value, m.value + m.row_start[m.n], a);
+  FSI_TRY(MatSeqAIJRestoreArray(s.A, &a));
+  return "";
+}
+
+std::string set_operator(void* handle, const PetscCsr& m) {
+  auto& s = *static_cast<Solver*>(handle);
+  if (std::string e = s.A ? update_values(s, m) : first_operator(s, m); !e.empty()) return e;
+  FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
+  FSI_TRY(KSPSetUp(s.ksp));  // the factorisation, or the preconditioner's set-up
+  PC pc;
+  FSI_TRY(KSPGetPC(s.ksp, &pc));
+  PCFailedReason failed = PC_NOERROR;
+  FSI_TRY(PCGetFailedReason(pc, &failed));
+  if (failed != PC_NOERROR)
+    return std::string("PETSc: the ") + (s.config.iterative ? "preconditioner's set-up" : "factorisation") +
+           " failed: " + PCFailedReasons[failed];
+  return "";
+}
+
+std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolveReport& report) {
+  auto& s = *static_cast<Solver*>(handle);
+  PetscScalar* v = nullptr;
+  PetscInt n = 0;
+  FSI_TRY(VecGetLocalSize(s.b, &n));
+  FSI_TRY(VecGetArray(s.b, &v));
+  std::copy(b, b + n, v);
+  FSI_TRY(VecRestoreArray(s.b, &v));
+  FSI_TRY(VecGetArray(s.x, &v));
+  std::copy(x, x + n, v);
+  FSI_TRY(VecRestoreArray(s.x, &v));
+  FSI_TRY(KSPSetInitialGuessNonzero(s.ksp, warm && s.config.iterative ? PETSC_TRUE : PETSC_FALSE));
+  FSI_TRY(KSPSolve(s.ksp, s.b, s.x));
+  KSPConvergedReason reason;
+  FSI_TRY(KSPGetConvergedReason(s.ksp, &reason));
+  FSI_TRY(KSPGetIterationNumber(s.ksp, &report.iterations));
+  report.reason = KSPConvergedReasons[reason];
+  PetscReal bnorm = 0;
+  FSI_TRY(VecNorm(s.b, NORM_2, &bnorm));
+  const PetscReal* h = nullptr;
+  PetscInt count = 0;
+  FSI_TRY(KSPGetResidualHistory(s.ksp, &h, &count));
+  report.history.clear();
+  for (PetscInt k = 0; k < count; ++k) report.history.push_back(bnorm > 0 ? h[k] / bnorm : h[k]);
+  report.residual = report.history.empty() ? 0 : report.history.back();
+  if (reason < 0) return "PETSc: the solve did not converge (" + report.reason + ")";
+  FSI_TRY(VecGetArray(s.x, &v));
+  std::copy(v, v + n, x);
+  FSI_TRY(VecRestoreArray(s.x, &v));
+  return "";
+}
+
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, create, set_operator, solve, destroy};
+
+}  // namespace
+}  // namespace fsi
+
+extern "C" __attribute__((visibility("default"))) const fsi::PetscPlugin* fsicontact_petsc_plugin() {
+  return &fsi::kPlugin;
+}

@@ -1,0 +1,61 @@
+// The PETSc side of the fluid layer, a plugin: libfsicontact_petsc.so
+// (petsc_plugin.cpp) links PETSc (Debian's libpetsc-real-dev: OpenMPI, MUMPS, hypre)
+// and is loaded (dlopen) the first time a run asks for fluid.linear_solver =
+// "petsc-mumps" or "petsc-iterative" (SPEC §13), so that the runs that do not, the
+// default, neither load PETSc and its MPI nor start MPI (petsc_solver.hpp).
+//
+// Its solvers hold PETSc objects behind an opaque handle; every function reports
+// PETSc's errors as text ("" when none), never as a C++ exception across the
+// library's edge.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fsi {
+
+// One square matrix, compressed rows (0-based, rows sorted). The pattern of every call
+// for one solver is the first call's (SparseDirectSolver checks it).
+struct PetscCsr {
+  int n = 0;
+  const int* row_start = nullptr;  // n + 1
+  const int* column = nullptr;
+  const double* value = nullptr;
+};
+
+struct PetscSolverConfig {
+  bool iterative = false;  // "petsc-iterative"; else MUMPS through PETSc
+  bool symmetric = false;  // values symmetric: MUMPS LDLᵀ instead of LU
+  double tol = 1e-10;      // relative to ‖b‖, the residual's own norm (iterative)
+  int max_iterations = 1000;
+  // Per unknown, 1 for the pressure's (the saddle point's second field), 0 for the
+  // velocity's: the block preconditioner's split (iterative).
+  std::vector<char> is_pressure;
+};
+
+struct PetscSolveReport {
+  int iterations = 0;
+  double residual = 0;            // ‖b − A x‖ / ‖b‖ at the end (iterative)
+  std::vector<double> history;    // the residual norm of every iteration, relative
+  std::string reason;             // PETSc's converged or diverged reason
+};
+
+struct PetscPlugin {
+  // Must equal kPetscPluginVersion: the loader refuses a plugin of another build.
+  int version;
+  // PetscInitialize (MPI too, if no one has), once per process; PETSc's error
+  // handler set to return, its signal handlers off (the program has its own). Fills
+  // the rank and the number of ranks of the run. "" or the error.
+  std::string (*initialise)(int& rank, int& ranks);
+  // A solver (null and `error` set if it cannot be made).
+  void* (*create)(const PetscSolverConfig& config, std::string& error);
+  // The operator: its first call fixes the pattern; every call refactorises
+  // (direct) or rebuilds the preconditioner (iterative).
+  std::string (*set_operator)(void* solver, const PetscCsr& A);
+  // x with A x = b; x holds the initial guess if `warm` (iterative).
+  std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
+  void (*destroy)(void* solver);
+};
+inline constexpr int kPetscPluginVersion = 1;
+
+}  // namespace fsi

@@ -1,0 +1,56 @@
+// fluid.linear_solver = "petsc-mumps" | "petsc-iterative" (SPEC §13): the fluid's
+// linear systems through PETSc, behind the same interface as the direct solvers
+// (sparse_solver.hpp), PETSc itself in a plugin loaded on first use
+// (petsc_plugin.hpp). An iterative "factorisation" is the preconditioner's set-up;
+// each solve starts from the last solution (a warm start) and records its iterations.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fluid/sparse_solver.hpp"
+
+namespace fsi {
+
+struct PetscPlugin;
+
+class PetscSolver final : public SparseDirectSolver {
+ public:
+  // name: "petsc-mumps" or "petsc-iterative". Loads the plugin and initialises PETSc
+  // (SolverFailure if this build has none, or it cannot start).
+  PetscSolver(const std::string& name, const LinearSolverOptions& options);
+  ~PetscSolver() override;
+  std::string name() const override { return name_; }
+  bool needs_symmetry() const override { return false; }
+  void describe_system(std::vector<char> is_pressure, bool symmetric) override {
+    is_pressure_ = std::move(is_pressure);
+    symmetric_ = symmetric;
+  }
+  const std::vector<int>* iteration_counts() const override { return iterative_ ? &iterations_ : nullptr; }
+  double residual_tolerance() const override;
+
+ protected:
+  void analyze_pattern(const Eigen::SparseMatrix<double>& A) override;
+  void factorize_values(const Eigen::SparseMatrix<double>& A) override;
+  Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override;
+
+ private:
+  std::string name_;
+  LinearSolverOptions options_;
+  bool iterative_;
+  const PetscPlugin* plugin_;
+  void* solver_ = nullptr;
+  std::vector<char> is_pressure_;
+  bool symmetric_ = false;
+  Eigen::VectorXd last_;         // the last solution: the next solve's first iterate
+  std::vector<int> iterations_;  // per solve
+};
+
+// The number of ranks the run started with (1 without mpirun), read from the MPI
+// launcher's environment without starting MPI.
+int launched_ranks();
+
+}  // namespace fsi

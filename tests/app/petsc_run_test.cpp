@@ -1,0 +1,61 @@
+// fluid.linear_solver through the program (SPEC §13): the §7.2 case's answer on each
+// solver, summary.json's linear_solver, linear_iterations and ranks; a start on several
+// MPI ranks refused (this build runs on one), nothing written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/cli.hpp"
+
+namespace fsi::petsc_run_test {
+namespace {
+
+using nlohmann::json;
+using testing::run_cli;
+using testing::run_shell;
+using testing::scratch_dir;
+using testing::slurp;
+
+// The §7.2 case on its coarse fluid (hF = 0.02), no figures.
+json run_with(const std::string& solver, const std::filesystem::path& dir) {
+  const testing::CliRun r = run_cli("run -q --set fluid.h=0.02 --set output.png=false --set output.vtu=false "
+                                    "--set fluid.linear_solver='\"" + solver + "\"' --out " + solver, dir);
+  EXPECT_EQ(r.status, 0) << solver << ": " << r.err;
+  return json::parse(slurp(dir / solver / "summary.json"));
+}
+
+TEST(PetscRun, EverySolverGivesTheDirectAnswer) {
+#ifndef FSICONTACT_HAVE_PETSC
+  GTEST_SKIP() << "built without PETSc";
+#endif
+  const auto dir = scratch_dir("petsc-run");
+  const json mumps = run_with("mumps", dir);
+  EXPECT_EQ(mumps["fluid"]["linear_solver"], "mumps");
+  EXPECT_EQ(mumps["ranks"], 1);
+  json iterative;
+  for (const char* solver : {"petsc-mumps", "petsc-iterative"}) {
+    const json s = run_with(solver, dir);
+    EXPECT_EQ(s["fluid"]["linear_solver"], solver);
+    EXPECT_EQ(s["fluid"]["factorization"], "whole");
+    EXPECT_EQ(s["iterations"], mumps["iterations"]) << solver;
+    EXPECT_NEAR(s["max_displacement"].get<double>(), mumps["max_displacement"].get<double>(), 1e-9) << solver;
+    if (std::string(solver) == "petsc-iterative") iterative = s;
+  }
+  // One count per solve (a pass whose χ did not change reuses the last solution).
+  ASSERT_TRUE(iterative["fluid"].contains("linear_iterations"));
+  EXPECT_EQ(iterative["fluid"]["linear_iterations"].size(), iterative["fluid"]["factorizations"].get<std::size_t>());
+  EXPECT_GT(iterative["fluid"]["linear_iterations_total"].get<long>(), 0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PetscRun, SeveralMpiRanksAreRefusedWithNothingWritten) {
+  const auto dir = scratch_dir("petsc-ranks");
+  const testing::CliRun r = run_shell(std::string("OMPI_COMM_WORLD_SIZE=2 '") + FSICONTACT_BINARY + "' run -q --out res", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("2 MPI ranks"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "res"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fsi::petsc_run_test
