@@ -29,7 +29,9 @@ const Case& dfg(const std::string& h_near) {
 void BM_TaylorHoodSteps(benchmark::State& state, const std::string& h_near, bool reuse) {
   const Case& c = dfg(h_near);
   TaylorHoodSetup s = make_taylor_hood(c, make_fluid_mesh(c));
-  TaylorHoodOptions options{c.fluid->newton_tol, c.fluid->newton_max_steps};
+  TaylorHoodOptions options;
+  options.tol = c.fluid->newton_tol;
+  options.max_steps = c.fluid->newton_max_steps;
   options.reuse_factors = reuse;
   double seconds = 0;
   int factorizations = 0, chord = 0;

@@ -57,7 +57,7 @@ void* open_plugin(const std::string& file, const std::string& what, const std::s
     throw SolverFailure("cannot load " + what + " " + candidate + ": " + (why ? why : "unknown error") + " (" +
                         package + ")");
   }
-  throw SolverFailure("cannot find " + what + " " + file + " (looked for " + searched +
+  throw SolverFailure("cannot find " + what + " " + file + " (looked for " + searched + "; " + package +
                       "; rebuild with make program, or reinstall)");
 }
 

@@ -7,8 +7,9 @@
 // point [A Bᵀ; B −C] (Elman, Silvester, Wathen 2014, ch. 9): the velocity block, which
 // holds the penalty (1/ε) χ M, by one V-cycle of hypre's BoomerAMG; the Schur
 // complement by BoomerAMG on S_p = −C − B diag(A)⁻¹ Bᵀ ("selfp"), which follows the
-// penalty: where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
-// matrix would be off by 1/ε (measured: docs/performance.md).
+// penalty (where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
+// matrix would be off by 1/ε), less the fluid's weighted pressure mass matrix when
+// the caller gives it (set_schur_preconditioner; petsc_solver.cpp says why).
 //
 // The defaults are set on the objects before KSPSetFromOptions, and the split's inner
 // solvers' in PETSc's options database unless given there, so that PETSC_OPTIONS can
@@ -53,6 +54,7 @@ std::string error_text(PetscErrorCode code, const char* call) {
 struct Solver {
   PetscSolverConfig config;
   Mat A = nullptr;
+  Mat S = nullptr;  // the Schur preconditioning matrix, if given
   Vec b = nullptr, x = nullptr;
   KSP ksp = nullptr;
   IS fields[2] = {nullptr, nullptr};
@@ -88,11 +90,19 @@ std::string set_iterative(KSP ksp) {
   FSI_TRY(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
   FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr));
   // The inner solvers exist only once the split is set up: their defaults go to the
-  // options database, which they read then.
+  // options database, which they read then. The velocity block couples its two
+  // components (the symmetric gradient) and holds the penalty's mass: BoomerAMG's
+  // strength threshold 0.7 instead of its 2D default 0.25 took GMRES from 215 to 65
+  // iterations at h = 0.005 and keeps them at 61-71 from h = 0.02 to 0.0025 (the
+  // §7.2 box, bench/petsc_study.py; docs/performance.md "PETSc").
   const std::pair<const char*, const char*> inner[] = {
-      {"-fluid_fieldsplit_u_ksp_type", "preonly"}, {"-fluid_fieldsplit_u_pc_type", "hypre"},
-      {"-fluid_fieldsplit_u_pc_hypre_type", "boomeramg"}, {"-fluid_fieldsplit_p_ksp_type", "preonly"},
-      {"-fluid_fieldsplit_p_pc_type", "hypre"}, {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"}};
+      {"-fluid_fieldsplit_u_ksp_type", "preonly"},
+      {"-fluid_fieldsplit_u_pc_type", "hypre"},
+      {"-fluid_fieldsplit_u_pc_hypre_type", "boomeramg"},
+      {"-fluid_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.7"},
+      {"-fluid_fieldsplit_p_ksp_type", "preonly"},
+      {"-fluid_fieldsplit_p_pc_type", "hypre"},
+      {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"}};
   for (const auto& [name, value] : inner)
     if (std::string e = set_default(name, value); !e.empty()) return e;
   return "";
@@ -138,6 +148,7 @@ void destroy(void* handle) {
   if (!s) return;
   KSPDestroy(&s->ksp);
   MatDestroy(&s->A);
+  MatDestroy(&s->S);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
   ISDestroy(&s->fields[0]);
@@ -159,19 +170,38 @@ std::string make_ksp(Solver& s) {
 }
 
 void* create(const PetscSolverConfig& config, std::string& error) {
-  auto* s = new Solver{config};
+  auto* s = new Solver;
+  s->config = config;
   error = make_ksp(*s);
   if (error.empty()) return s;
   destroy(s);
   return nullptr;
 }
 
-std::string first_operator(Solver& s, const PetscCsr& m) {
-  FSI_TRY(MatCreate(PETSC_COMM_SELF, &s.A));
-  FSI_TRY(MatSetSizes(s.A, m.n, m.n, m.n, m.n));
-  FSI_TRY(MatSetType(s.A, MATSEQAIJ));
+// A new matrix holding m (its pattern and values).
+std::string matrix_from(const PetscCsr& m, Mat& out) {
+  FSI_TRY(MatCreate(PETSC_COMM_SELF, &out));
+  FSI_TRY(MatSetSizes(out, m.n, m.n, m.n, m.n));
+  FSI_TRY(MatSetType(out, MATSEQAIJ));
   std::vector<PetscInt> rows(m.row_start, m.row_start + m.n + 1), cols(m.column, m.column + m.row_start[m.n]);
-  FSI_TRY(MatSeqAIJSetPreallocationCSR(s.A, rows.data(), cols.data(), m.value));
+  FSI_TRY(MatSeqAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value));
+  return "";
+}
+
+// A new matrix each time (its pattern is fixed, but its set-up is small beside the
+// multigrid's that follows).
+std::string set_schur_preconditioner(void* handle, const PetscCsr& m) {
+  auto& s = *static_cast<Solver*>(handle);
+  FSI_TRY(MatDestroy(&s.S));
+  if (std::string e = matrix_from(m, s.S); !e.empty()) return e;
+  PC pc;
+  FSI_TRY(KSPGetPC(s.ksp, &pc));
+  FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.S));
+  return "";
+}
+
+std::string first_operator(Solver& s, const PetscCsr& m) {
+  if (std::string e = matrix_from(m, s.A); !e.empty()) return e;
   if (s.config.symmetric) {
     FSI_TRY(MatSetOption(s.A, MAT_SYMMETRIC, PETSC_TRUE));
     FSI_TRY(MatSetOption(s.A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
@@ -236,7 +266,8 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   return "";
 }
 
-const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, create, set_operator, solve, destroy};
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,   create, set_operator, set_schur_preconditioner,
+                             solve,              destroy};
 
 }  // namespace
 }  // namespace fsi

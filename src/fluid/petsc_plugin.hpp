@@ -52,10 +52,13 @@ struct PetscPlugin {
   // The operator: its first call fixes the pattern; every call refactorises
   // (direct) or rebuilds the preconditioner (iterative).
   std::string (*set_operator)(void* solver, const PetscCsr& A);
+  // The Schur complement's preconditioning matrix on the pressure unknowns (iterative),
+  // before set_operator; without it, PETSc's S_p = D − B diag(A)⁻¹ Bᵀ.
+  std::string (*set_schur_preconditioner)(void* solver, const PetscCsr& S);
   // x with A x = b; x holds the initial guess if `warm` (iterative).
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 1;
+inline constexpr int kPetscPluginVersion = 2;
 
 }  // namespace fsi

@@ -29,6 +29,8 @@ class PetscSolver final : public SparseDirectSolver {
     is_pressure_ = std::move(is_pressure);
     symmetric_ = symmetric;
   }
+  bool wants_pressure_mass() const override { return iterative_ && options_.schur_mass; }
+  void set_pressure_mass(Eigen::SparseMatrix<double> M) override { pressure_mass_ = std::move(M); }
   const std::vector<int>* iteration_counts() const override { return iterative_ ? &iterations_ : nullptr; }
   double residual_tolerance() const override;
 
@@ -45,6 +47,7 @@ class PetscSolver final : public SparseDirectSolver {
   void* solver_ = nullptr;
   std::vector<char> is_pressure_;
   bool symmetric_ = false;
+  Eigen::SparseMatrix<double> pressure_mass_;
   Eigen::VectorXd last_;         // the last solution: the next solve's first iterate
   std::vector<int> iterations_;  // per solve
 };

@@ -28,8 +28,13 @@ struct FactorStatistics {
 
 // An iterative solver's controls (fluid.linear_tol, fluid.linear_max_iterations).
 struct LinearSolverOptions {
+  LinearSolverOptions() = default;
+  LinearSolverOptions(double tol_, int max_iterations_) : tol(tol_), max_iterations(max_iterations_) {}
   double tol = 1e-10;  // ‖b − A x‖ ≤ tol ‖b‖
   int max_iterations = 1000;
+  // The iterative solver's Schur preconditioner: S_p = D − B diag(A)⁻¹ Bᵀ alone
+  // ("selfp"), or minus the fluid's pressure mass matrix too (petsc_plugin.cpp).
+  bool schur_mass = true;
 };
 
 class SparseDirectSolver {
@@ -53,6 +58,11 @@ class SparseDirectSolver {
   // split), and whether the values will stay symmetric (petsc_solver.hpp); the other
   // solvers do not need either.
   virtual void describe_system(std::vector<char> /*is_pressure*/, bool /*symmetric*/) {}
+  // Whether it preconditions with a pressure mass matrix, which the caller then gives
+  // (set_pressure_mass, before each factorize: Σ_T w_T ∫_T p q on the pressure
+  // unknowns, w = (1 − χ)/μ; StokesAssembler::pressure_mass).
+  virtual bool wants_pressure_mass() const { return false; }
+  virtual void set_pressure_mass(Eigen::SparseMatrix<double> /*M*/) {}
   // An iterative solver's iterations, per solve (null: a direct solver).
   virtual const std::vector<int>* iteration_counts() const { return nullptr; }
   // The relative residual ‖A x − b‖/‖b‖ a solve must reach for its caller to accept

@@ -345,4 +345,23 @@ std::vector<char> StokesAssembler::pressure_unknowns() const {
   return p;
 }
 
+Eigen::SparseMatrix<double> StokesAssembler::pressure_mass(const Eigen::VectorXd& weight) const {
+  const int nv = mesh_.num_vertices();
+  std::vector<int> row(nv, -1);  // pressure vertex → its row among the pressure unknowns
+  int n = 0;
+  for (int d : free_)
+    if (d >= 2 * nv) row[d - 2 * nv] = n++;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(9 * geometry_.size());
+  for (int t = 0; t < static_cast<int>(geometry_.size()); ++t)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const int i = row[mesh_.triangles[t][a]], j = row[mesh_.triangles[t][b]];
+        if (i >= 0 && j >= 0) entries.emplace_back(i, j, weight[t] * bubble::mass_p1(geometry_[t].area, a, b));
+      }
+  Eigen::SparseMatrix<double> M(n, n);
+  M.setFromTriplets(entries.begin(), entries.end());
+  return M;
+}
+
 }  // namespace fsi

@@ -86,6 +86,9 @@ class StokesAssembler {
   int unknowns() const { return static_cast<int>(free_.size()); }
   // Per unknown, 1 for a pressure's (the saddle point's second field).
   std::vector<char> pressure_unknowns() const;
+  // The P1 pressure mass matrix Σ_T w_T ∫_T p q on the pressure unknowns, in their
+  // order among all unknowns (one weight per triangle).
+  Eigen::SparseMatrix<double> pressure_mass(const Eigen::VectorXd& weight) const;
   long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
 
   // K and rhs for χ and ε over all triangles.

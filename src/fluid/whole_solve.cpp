@@ -27,6 +27,10 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
       timing_.analysis += clock.elapsed();
       ++timing_.analyses;
     }
+    if (solver_->wants_pressure_mass()) {
+      const Eigen::VectorXd weight = (1.0 - chi.array()) / assembler_.mu();  // the fluid's part: χ = 0
+      solver_->set_pressure_mass(assembler_.pressure_mass(weight));
+    }
     solver_->factorize(K);
     timing_.factorization += clock.elapsed();
     ++timing_.factorizations;

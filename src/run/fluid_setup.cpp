@@ -111,7 +111,8 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
   s.stokes = std::make_unique<PenalisedStokes>(
       *s.mesh, f.mu, eps, fluid_body_force(f), box_boundary_conditions(*s.mesh, f),
       f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
-  if (f.linear_solver != "mumps") s.stokes->set_linear_solver(f.linear_solver, {f.linear_tol, f.linear_max_iterations});
+  if (f.linear_solver != "mumps")
+    s.stokes->set_linear_solver(f.linear_solver, LinearSolverOptions(f.linear_tol, f.linear_max_iterations));
   set_fluid_model(*s.stokes, f, c.time && c.time->convection == "semi-implicit");
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);

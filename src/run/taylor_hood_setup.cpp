@@ -40,9 +40,11 @@ TaylorHoodSetup make_taylor_hood(const Case& c, Mesh mesh, double t) {
                               f.navier_stokes() ? f.rho : 0.0};
   s.system = std::make_unique<TaylorHoodSystem>(*s.geometry, model, fluid_body_force(f, t),
                                                 box_boundary_conditions(*s.mesh, f, t));
-  TaylorHoodOptions options{f.newton_tol, f.newton_max_steps};
+  TaylorHoodOptions options;
+  options.tol = f.newton_tol;
+  options.max_steps = f.newton_max_steps;
   if (f.linear_solver != "mumps") options.solver = f.linear_solver;
-  options.linear = {f.linear_tol, f.linear_max_iterations};
+  options.linear = LinearSolverOptions(f.linear_tol, f.linear_max_iterations);
   s.flow = std::make_unique<TaylorHoodFlow>(*s.system, options);
   return s;
 }

@@ -9,6 +9,7 @@
 #include <limits>
 #include <ostream>
 #include <random>
+#include <vector>
 
 #include "qp/active_set_solver.hpp"
 #include "qp/ipopt_solver.hpp"
@@ -50,18 +51,16 @@ Outcome solve_or_refuse(QpSolver& solver, const RandomQp& q, const std::string& 
   }
 }
 
-// Every combination of the four scalings in {1e-200, 1e-100, 1, 1e100, 1e200}:
-// 625 problems per solver. Where the scalings are consistent (b/A and c/C scaled
-// alike, so the problem is the unscaled one in other units: x·10^(eb−eA),
-// α·10^(eb−eC)) and every intermediate is representable, both must solve it: IPOPT's
-// scaling (src/qp/ipopt_solver.cpp) and the active-set Schur complement
-// S·10^(2eC−eA) are unit-free. Elsewhere a QpError is allowed.
-TEST(QpRobustness, BadlyScaledProblemsAreSolvedOrRefused) {
+// Every combination of the four scalings in `exponents` (powers of ten). Where the
+// scalings are consistent (b/A and c/C scaled alike, so the problem is the unscaled one
+// in other units: x·10^(eb−eA), α·10^(eb−eC)) and every intermediate is representable,
+// both must solve it: IPOPT's scaling (src/qp/ipopt_solver.cpp) and the active-set
+// Schur complement S·10^(2eC−eA) are unit-free. Elsewhere a QpError is allowed.
+void solve_or_refuse_every_scaling(const std::vector<int>& exponents) {
   const RandomQp base = random_qp(16, 5, 3);
   ActiveSetSolver active_set;
   IpoptSolver ipopt;
   int solved[2] = {0, 0}, refused[2] = {0, 0};
-  const int exponents[] = {-200, -100, 0, 100, 200};
   for (int eA : exponents)
     for (int eb : exponents)
       for (int eC : exponents)
@@ -84,6 +83,16 @@ TEST(QpRobustness, BadlyScaledProblemsAreSolvedOrRefused) {
         }
   std::printf("active-set: %d solved, %d refused; ipopt: %d solved, %d refused\n", solved[0],
               refused[0], solved[1], refused[1]);
+}
+
+// {1e-200, 1, 1e200}: 81 problems per solver, consistent and not, representable and
+// not, every path of both solvers' scaling and refusal (clang's coverage:
+// scripts/study-coverage.sh), in 1/8 of the time the sanitizers took for the full grid.
+TEST(QpRobustness, BadlyScaledProblemsAreSolvedOrRefused) { solve_or_refuse_every_scaling({-200, 0, 200}); }
+
+// {1e-200, 1e-100, 1, 1e100, 1e200}: 625 problems per solver (a study: Release only).
+TEST(QpRobustness, EveryScalingOfAHundredDecadesIsSolvedOrRefused) {
+  solve_or_refuse_every_scaling({-200, -100, 0, 100, 200});
 }
 
 // Load-dominated problems, the displacement up to 1e300 times the gap: the paper's
