@@ -72,6 +72,8 @@ void PetscSolver::analyze_pattern(const Eigen::SparseMatrix<double>& A) {
   last_.resize(0);
 }
 
+namespace {
+
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w for K = [A_u Bᵀ; B D] split by is_pressure (D = −C,
 // so S_p, like the Schur complement, is negative definite): PETSc's "selfp", which
 // follows the penalty (diag(A_u) holds (1/ε)χM), less the fluid's pressure mass matrix
@@ -104,6 +106,8 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> schur_preconditioner(const Eigen::S
   if (mass.rows() == np) S -= mass;
   return S;
 }
+
+}  // namespace
 
 void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
   if (wants_pressure_mass()) {
