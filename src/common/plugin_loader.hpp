@@ -11,6 +11,8 @@
 
 #include <string>
 
+#include "common/errors.hpp"
+
 namespace fsi {
 
 // dlopen of the first candidate that exists, RTLD_NOW | RTLD_LOCAL; `what` names it in
@@ -24,5 +26,20 @@ void* open_plugin(const std::string& file, const std::string& what, const std::s
 
 // The plugin's entry point `symbol` (a function taking nothing), or SolverFailure.
 void* plugin_symbol(void* library, const char* symbol, const std::string& what, const std::string& path);
+
+// The plugin's table of functions: the library opened (open_plugin), its entry point
+// `symbol` called, the table's `version` checked against the program's (SolverFailure
+// for a plugin of another build).
+template <class Table>
+const Table* load_plugin_table(const std::string& file, const char* symbol, const std::string& what,
+                               const std::string& package, int version, bool deep_bind = false) {
+  std::string path;
+  void* library = open_plugin(file, what, package, path, deep_bind);
+  using Entry = const Table* (*)();
+  const Table* table = reinterpret_cast<Entry>(plugin_symbol(library, symbol, what, path))();
+  if (!table || table->version != version)
+    throw SolverFailure(what + " " + path + " is of another build (rebuild with make program, or reinstall)");
+  return table;
+}
 
 }  // namespace fsi

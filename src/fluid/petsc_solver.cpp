@@ -13,20 +13,14 @@ namespace fsi {
 namespace {
 
 const PetscPlugin* load() {
-  const std::string what = "the PETSc plugin";
-  std::string path;
   // Deep binding: the program links sequential MUMPS, whose stub MPI library defines
   // MPI_Init, MPI_Comm_rank and MPI_Finalize, and MUMPS's own symbols; PETSc and its
   // parallel MUMPS must bind to OpenMPI's and their own instead.
-  void* library = open_plugin("libfsicontact_petsc.so", what,
-                              "PETSc comes from the Debian package libpetsc-real-dev, and this program was built "
-                              "without it if the file is missing; fluid.linear_solver = \"mumps\" needs no PETSc",
-                              path, true);
-  using Entry = const PetscPlugin* (*)();
-  const auto entry = reinterpret_cast<Entry>(plugin_symbol(library, "fsicontact_petsc_plugin", what, path));
-  const PetscPlugin* plugin = entry();
-  if (!plugin || plugin->version != kPetscPluginVersion)
-    throw SolverFailure("the PETSc plugin " + path + " is of another build (rebuild with make program, or reinstall)");
+  const PetscPlugin* plugin = load_plugin_table<PetscPlugin>(
+      "libfsicontact_petsc.so", "fsicontact_petsc_plugin", "the PETSc plugin",
+      "PETSc comes from the Debian package libpetsc-real-dev, and this program was built without it if the file is "
+      "missing; fluid.linear_solver = \"mumps\" needs no PETSc",
+      kPetscPluginVersion, true);
   int rank = 0, ranks = 1;
   if (const std::string error = plugin->initialise(rank, ranks); !error.empty())
     throw SolverFailure("cannot initialise PETSc: " + error);
@@ -128,7 +122,7 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   Eigen::VectorXd x = warm ? last_ : Eigen::VectorXd::Zero(rhs.size());
   PetscSolveReport report;
   const std::string error = plugin_->solve(solver_, rhs.data(), x.data(), warm, report);
-  if (iterative_) iterations_.push_back(report.iterations);
+  if (iterative_) last_iterations_ = report.iterations;
   if (!error.empty()) {
     std::string history;
     const std::size_t n = report.history.size(), shown = std::min<std::size_t>(n, 8);

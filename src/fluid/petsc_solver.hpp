@@ -31,7 +31,6 @@ class PetscSolver final : public SparseDirectSolver {
   }
   bool wants_pressure_mass() const override { return iterative_ && options_.schur_mass; }
   void set_pressure_mass(Eigen::SparseMatrix<double> M) override { pressure_mass_ = std::move(M); }
-  const std::vector<int>* iteration_counts() const override { return iterative_ ? &iterations_ : nullptr; }
   double residual_tolerance() const override;
 
  protected:
@@ -48,8 +47,7 @@ class PetscSolver final : public SparseDirectSolver {
   std::vector<char> is_pressure_;
   bool symmetric_ = false;
   Eigen::SparseMatrix<double> pressure_mass_;
-  Eigen::VectorXd last_;         // the last solution: the next solve's first iterate
-  std::vector<int> iterations_;  // per solve
+  Eigen::VectorXd last_;  // the last solution: the next solve's first iterate
 };
 
 // The number of ranks the run started with (1 without mpirun), read from the MPI

@@ -75,11 +75,27 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
+  last_iterations_ = -1;
   if (!factorized_) throw std::logic_error(name() + ": solve() without a factorisation");
   if (rhs.size() + 1 != static_cast<Eigen::Index>(outer_.size()))
     throw std::invalid_argument(name() + ": right-hand side of the wrong size");
   require_finite_rhs(rhs, name());
   return solve_factorized(rhs);
+}
+
+Eigen::VectorXd solve_counting_iterations(SparseDirectSolver& solver, const Eigen::VectorXd& rhs,
+                                          std::vector<int>& iterations) {
+  const auto record = [&] {
+    if (solver.last_iterations() >= 0) iterations.push_back(solver.last_iterations());
+  };
+  try {
+    Eigen::VectorXd x = solver.solve(rhs);
+    record();
+    return x;
+  } catch (...) {
+    record();
+    throw;
+  }
 }
 
 namespace {

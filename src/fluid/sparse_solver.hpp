@@ -63,8 +63,9 @@ class SparseDirectSolver {
   // unknowns, w = (1 − χ)/μ; StokesAssembler::pressure_mass).
   virtual bool wants_pressure_mass() const { return false; }
   virtual void set_pressure_mass(Eigen::SparseMatrix<double> /*M*/) {}
-  // An iterative solver's iterations, per solve (null: a direct solver).
-  virtual const std::vector<int>* iteration_counts() const { return nullptr; }
+  // The last solve's iterations (an iterative solver's, also when it failed; −1 for a
+  // direct solver, or a solve refused before it began).
+  int last_iterations() const { return last_iterations_; }
   // The relative residual ‖A x − b‖/‖b‖ a solve must reach for its caller to accept
   // it (the callers check it: a nearly singular matrix can factorise and give garbage).
   virtual double residual_tolerance() const { return 1e-8; }
@@ -76,6 +77,9 @@ class SparseDirectSolver {
   virtual void analyze_pattern(const Eigen::SparseMatrix<double>& A) = 0;
   virtual void factorize_values(const Eigen::SparseMatrix<double>& A) = 0;
   virtual Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) = 0;
+
+ protected:
+  int last_iterations_ = -1;  // set by an iterative solve_factorized
 
  private:
   std::vector<int> outer_, inner_;  // the analysed pattern
@@ -98,6 +102,11 @@ inline const char* const kDefaultSparseSolver = "mumps-metis";
 // the MUMPS, CHOLMOD and Eigen LDLᵀ ones; "umfpack", "umfpack-metis" (LU, its
 // symmetric strategy an ordering choice), "eigen-lu" and "mumps-lu" (MUMPS unsymmetric,
 // SYM = 0, METIS on the symmetric pattern) factor any matrix.
+// x = solver.solve(rhs), the solve's iterations (an iterative solver's) appended to
+// `iterations`, also when it throws (summary.json's fluid.linear_iterations).
+Eigen::VectorXd solve_counting_iterations(SparseDirectSolver& solver, const Eigen::VectorXd& rhs,
+                                          std::vector<int>& iterations);
+
 // "petsc-mumps", "petsc-iterative": through PETSc (petsc_solver.hpp), with `options`.
 std::unique_ptr<SparseDirectSolver> make_sparse_solver(const std::string& name,
                                                        const LinearSolverOptions& options = {});

@@ -99,8 +99,6 @@ class WholeSolve final : public StokesSolveStrategy {
   void new_run() override { assembler_.forget_assembly(); }
 
  private:
-  Eigen::VectorXd solve_counted(const Eigen::VectorXd& rhs);
-
   StokesAssembler& assembler_;
   std::unique_ptr<SparseDirectSolver> solver_;
   FluidTiming& timing_;

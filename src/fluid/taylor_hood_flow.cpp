@@ -43,9 +43,8 @@ void TaylorHoodFlow::factorize_at(const Eigen::VectorXd& U, bool picard) {
 
 Eigen::VectorXd TaylorHoodFlow::back_substitute() {
   const Stopwatch clock;
-  Eigen::VectorXd delta = solver_->solve(-system_.free_part(R_));
+  Eigen::VectorXd delta = solve_counting_iterations(*solver_, -system_.free_part(R_), timing_.linear_iterations);
   timing_.solve += clock.elapsed();
-  if (const std::vector<int>* counts = solver_->iteration_counts()) timing_.linear_iterations.push_back(counts->back());
   return delta;
 }
 

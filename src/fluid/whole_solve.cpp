@@ -36,7 +36,7 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
     ++timing_.factorizations;
   }
   const Stopwatch clock;
-  const Eigen::VectorXd x = solve_counted(rhs);
+  const Eigen::VectorXd x = solve_counting_iterations(*solver_, rhs, timing_.linear_iterations);
   if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
   // A nearly singular matrix can factorise without a zero pivot and give garbage:
   // one product with K (~1% of a factorisation) catches it. The direct solvers reach
@@ -47,21 +47,6 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
                         ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
   assembler_.fields(x, chi, eps, out_);
   timing_.solve += clock.elapsed();
-}
-
-// The solve, its iterations recorded (an iterative solver's) also when it fails.
-Eigen::VectorXd WholeSolve::solve_counted(const Eigen::VectorXd& rhs) {
-  const std::vector<int>* counts = solver_->iteration_counts();
-  const std::size_t before = counts ? counts->size() : 0;
-  struct Record {
-    const std::vector<int>* counts;
-    std::size_t before;
-    std::vector<int>& out;
-    ~Record() {
-      if (counts) out.insert(out.end(), counts->begin() + static_cast<std::ptrdiff_t>(before), counts->end());
-    }
-  } record{counts, before, timing_.linear_iterations};
-  return solver_->solve(rhs);
 }
 
 }  // namespace fsi

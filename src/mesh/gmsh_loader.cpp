@@ -13,14 +13,9 @@ namespace fsi {
 namespace {
 
 const GmshPlugin* load() {
-  const std::string what = "the Gmsh plugin";
-  std::string path;
-  void* library = open_plugin("libfsicontact_gmsh.so", what, "Gmsh itself comes from the Debian package libgmsh-dev", path);
-  using Entry = const GmshPlugin* (*)();
-  const auto entry = reinterpret_cast<Entry>(plugin_symbol(library, "fsicontact_gmsh_plugin", what, path));
-  const GmshPlugin* plugin = entry();
-  if (!plugin || plugin->version != kGmshPluginVersion)
-    throw SolverFailure("the Gmsh plugin " + path + " is of another build (rebuild with make program, or reinstall)");
+  const GmshPlugin* plugin =
+      load_plugin_table<GmshPlugin>("libfsicontact_gmsh.so", "fsicontact_gmsh_plugin", "the Gmsh plugin",
+                                    "Gmsh itself comes from the Debian package libgmsh-dev", kGmshPluginVersion);
   if (const std::string error = plugin->initialise(); !error.empty())
     throw SolverFailure("cannot initialise Gmsh: " + error);
   return plugin;  // never unloaded: Gmsh keeps its state for the process
