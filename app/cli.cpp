@@ -1,10 +1,14 @@
 #include "cli.hpp"
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <sstream>
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
-#include "fluid/petsc_solver.hpp"
+#include "common/launch.hpp"
 #include "io/case.hpp"
 #include "run/provenance.hpp"
 #include "run/run_case.hpp"
@@ -165,6 +169,24 @@ int run_subcommand(const CliArgs& a, const CLI::App& sweep, const CLI::App& conv
   }
 }
 
+// Under mpirun every rank runs the whole command, so that each takes part in the
+// fluid's distributed solves (SPEC §13); the ranks but 0 print nothing and write into
+// a directory of their own, removed at the end, so that the outputs are rank 0's
+// alone. Their computations are the same as rank 0's, so they fail where it fails.
+int run_on_other_rank(CliArgs a, const CLI::App& sweep, const CLI::App& converge) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path own = fs::temp_directory_path(ec) / ("fsicontact-rank-" + std::to_string(launched_rank()) + "-" +
+                                                     std::to_string(::getpid()));
+  if (ec || !fs::create_directories(own, ec)) return 1;  // mpirun then ends every rank
+  a.out_dir = own.string();
+  a.quiet = true;
+  std::ostringstream ignored;
+  const int status = run_subcommand(a, sweep, converge, Streams{ignored, ignored});
+  fs::remove_all(own, ec);
+  return status;
+}
+
 }  // namespace
 
 int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -187,14 +209,13 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
     err << app.help();
     return 2;
   }
-  // Each rank would run the whole case and write the same files: refused until the
-  // fluid is distributed (SPEC §13; issue 32).
-  if (const int ranks = launched_ranks(); ranks > 1) {
-    err << "fsicontact: started on " << ranks << " MPI ranks; this build runs on one: start it without mpirun "
-        << "(fluid.linear_solver = \"petsc-mumps\" and \"petsc-iterative\" run on one rank)\n";
+  const int ranks = launched_ranks();
+  if (ranks > 1 && !args.resume.empty()) {
+    err << "fsicontact: error: --resume runs on one rank; this run has " << ranks << " (start it without mpirun)\n";
     return 2;
   }
   install_interrupt_handler();
+  if (ranks > 1 && launched_rank() > 0) return run_on_other_rank(args, *sweep, *converge);
   return run_subcommand(args, *sweep, *converge, Streams{out, err});
 }
 

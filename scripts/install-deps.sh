@@ -10,6 +10,7 @@ packages=(
   libsuitesparse-dev     # UMFPACK, CHOLMOD (through Eigen's wrappers)
   libmumps-seq-dev       # MUMPS, sequential: the fluid's direct solver
   libpetsc-real-dev      # PETSc (OpenMPI, parallel MUMPS, hypre): fluid.linear_solver = "petsc-*", a plugin
+  openmpi-bin            # mpiexec: runs on several ranks (SPEC §13) and the two-rank tests (ctest Mpi.*)
   libopenblas0-serial    # optimised BLAS (becomes the system's libblas.so.3): 2-3x faster
                          # factorisations than the reference BLAS (docs/performance.md);
                          # serial, so results do not depend on a thread count

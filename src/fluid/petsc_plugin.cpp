@@ -17,6 +17,7 @@
 // "-fluid_ksp_monitor", "-fluid_fieldsplit_u_pc_type gamg"), "fluid_direct_" for MUMPS.
 #include <petscksp.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -51,15 +52,39 @@ std::string error_text(PetscErrorCode code, const char* call) {
     if (code_) return error_text(code_, #call);             \
   } while (0)
 
+// Every rank is given the whole system (petsc_plugin.hpp) and owns a contiguous
+// block of its rows, PETSc's even split: [first, last) of the unknowns, and of the
+// pressure's unknowns (the Schur preconditioner's rows) [p_first, p_last).
 struct Solver {
   PetscSolverConfig config;
+  PetscInt n = -1, first = 0, last = 0, p_first = 0, p_last = 0;
   Mat A = nullptr;
   Mat S = nullptr;  // the Schur preconditioning matrix, if given
   Vec b = nullptr, x = nullptr;
+  Vec all = nullptr;              // x gathered on every rank
+  VecScatter to_all = nullptr;
   KSP ksp = nullptr;
   IS fields[2] = {nullptr, nullptr};
   std::vector<PetscReal> history;
 };
+
+std::string set_layout(Solver& s, PetscInt n) {
+  if (s.n == n) return "";
+  if (s.n >= 0) return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(n);
+  PetscMPIInt rank = 0, ranks = 1;
+  FSI_TRY(MPI_Comm_rank(PETSC_COMM_WORLD, &rank) ? PETSC_ERR_MPI : 0);
+  FSI_TRY(MPI_Comm_size(PETSC_COMM_WORLD, &ranks) ? PETSC_ERR_MPI : 0);
+  const PetscInt base = n / ranks, extra = n % ranks;
+  s.n = n;
+  s.first = rank * base + std::min<PetscInt>(rank, extra);
+  s.last = s.first + base + (rank < extra ? 1 : 0);
+  const auto& p = s.config.is_pressure;
+  if (!p.empty()) {
+    s.p_first = static_cast<PetscInt>(std::count(p.begin(), p.begin() + s.first, 1));
+    s.p_last = s.p_first + static_cast<PetscInt>(std::count(p.begin() + s.first, p.begin() + s.last, 1));
+  }
+  return "";
+}
 
 std::string set_default(const char* name, const char* value) {
   PetscBool given = PETSC_FALSE;
@@ -127,16 +152,19 @@ std::string initialise(int& rank, int& ranks) {
 
 // The velocity's and the pressure's unknowns as index sets, named "u" and "p" (the
 // option prefixes fluid_fieldsplit_u_, fluid_fieldsplit_p_).
+// This rank's rows of each.
 std::string split_fields(Solver& s) {
+  const auto& p = s.config.is_pressure;
+  if (std::count(p.begin(), p.end(), 1) == 0 || std::count(p.begin(), p.end(), 0) == 0)
+    return "the field split needs velocity and pressure unknowns";
+  if (std::string e = set_layout(s, static_cast<PetscInt>(p.size())); !e.empty()) return e;
   std::vector<PetscInt> index[2];
-  for (std::size_t i = 0; i < s.config.is_pressure.size(); ++i)
-    index[s.config.is_pressure[i] ? 1 : 0].push_back(static_cast<PetscInt>(i));
-  if (index[0].empty() || index[1].empty()) return "the field split needs velocity and pressure unknowns";
+  for (PetscInt i = s.first; i < s.last; ++i) index[p[static_cast<std::size_t>(i)] ? 1 : 0].push_back(i);
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
   const char* names[2] = {"u", "p"};
   for (int f = 0; f < 2; ++f) {
-    FSI_TRY(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(index[f].size()), index[f].data(),
+    FSI_TRY(ISCreateGeneral(PETSC_COMM_WORLD, static_cast<PetscInt>(index[f].size()), index[f].data(),
                             PETSC_COPY_VALUES, &s.fields[f]));
     FSI_TRY(PCFieldSplitSetIS(pc, names[f], s.fields[f]));
   }
@@ -151,13 +179,15 @@ void destroy(void* handle) {
   MatDestroy(&s->S);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
+  VecDestroy(&s->all);
+  VecScatterDestroy(&s->to_all);
   ISDestroy(&s->fields[0]);
   ISDestroy(&s->fields[1]);
   delete s;
 }
 
 std::string make_ksp(Solver& s) {
-  FSI_TRY(KSPCreate(PETSC_COMM_SELF, &s.ksp));
+  FSI_TRY(KSPCreate(PETSC_COMM_WORLD, &s.ksp));
   FSI_TRY(KSPSetOptionsPrefix(s.ksp, s.config.iterative ? "fluid_" : "fluid_direct_"));
   const std::string e = s.config.iterative ? set_iterative(s.ksp) : set_direct(s.ksp, s.config.symmetric);
   if (!e.empty()) return e;
@@ -178,13 +208,19 @@ void* create(const PetscSolverConfig& config, std::string& error) {
   return nullptr;
 }
 
-// A new matrix holding m (its pattern and values).
-std::string matrix_from(const PetscCsr& m, Mat& out) {
-  FSI_TRY(MatCreate(PETSC_COMM_SELF, &out));
-  FSI_TRY(MatSetSizes(out, m.n, m.n, m.n, m.n));
-  FSI_TRY(MatSetType(out, MATSEQAIJ));
-  std::vector<PetscInt> rows(m.row_start, m.row_start + m.n + 1), cols(m.column, m.column + m.row_start[m.n]);
-  FSI_TRY(MatSeqAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value));
+// A new matrix holding m (its pattern and values), this rank's rows [first, last)
+// of it: sequential on one rank, distributed on several.
+std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& out) {
+  FSI_TRY(MatCreate(PETSC_COMM_WORLD, &out));
+  FSI_TRY(MatSetSizes(out, last - first, last - first, m.n, m.n));
+  FSI_TRY(MatSetType(out, MATAIJ));
+  const int offset = m.row_start[first];
+  std::vector<PetscInt> rows(m.row_start + first, m.row_start + last + 1);
+  for (PetscInt& r : rows) r -= offset;
+  const std::vector<PetscInt> cols(m.column + offset, m.column + m.row_start[last]);
+  // Each call does nothing on the other type's matrix.
+  FSI_TRY(MatSeqAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value + offset));
+  FSI_TRY(MatMPIAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value + offset));
   return "";
 }
 
@@ -193,7 +229,8 @@ std::string matrix_from(const PetscCsr& m, Mat& out) {
 std::string set_schur_preconditioner(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
   FSI_TRY(MatDestroy(&s.S));
-  if (std::string e = matrix_from(m, s.S); !e.empty()) return e;
+  if (s.p_last - s.p_first > m.n) return "the Schur preconditioner is smaller than the pressure's unknowns";
+  if (std::string e = matrix_from(m, s.p_first, s.p_last, s.S); !e.empty()) return e;
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
   FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.S));
@@ -201,21 +238,27 @@ std::string set_schur_preconditioner(void* handle, const PetscCsr& m) {
 }
 
 std::string first_operator(Solver& s, const PetscCsr& m) {
-  if (std::string e = matrix_from(m, s.A); !e.empty()) return e;
+  if (std::string e = set_layout(s, m.n); !e.empty()) return e;
+  if (std::string e = matrix_from(m, s.first, s.last, s.A); !e.empty()) return e;
   if (s.config.symmetric) {
     FSI_TRY(MatSetOption(s.A, MAT_SYMMETRIC, PETSC_TRUE));
     FSI_TRY(MatSetOption(s.A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
   }
   FSI_TRY(MatCreateVecs(s.A, &s.x, &s.b));
+  FSI_TRY(VecScatterCreateToAll(s.x, &s.to_all, &s.all));
   return "";
 }
 
-// The values of the pattern fixed by the first call, in its order.
+// This rank's rows' values, on the pattern fixed by the first call.
 std::string update_values(Solver& s, const PetscCsr& m) {
-  PetscScalar* a = nullptr;
-  FSI_TRY(MatSeqAIJGetArray(s.A, &a));
-  std::copy(m.value, m.value + m.row_start[m.n], a);
-  FSI_TRY(MatSeqAIJRestoreArray(s.A, &a));
+  if (m.n != s.n) return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
+  static_assert(sizeof(PetscInt) == sizeof(int), "PetscCsr's indices are PETSc's");
+  for (PetscInt r = s.first; r < s.last; ++r) {
+    const int begin = m.row_start[r];
+    FSI_TRY(MatSetValues(s.A, 1, &r, m.row_start[r + 1] - begin, m.column + begin, m.value + begin, INSERT_VALUES));
+  }
+  FSI_TRY(MatAssemblyBegin(s.A, MAT_FINAL_ASSEMBLY));
+  FSI_TRY(MatAssemblyEnd(s.A, MAT_FINAL_ASSEMBLY));
   return "";
 }
 
@@ -234,16 +277,16 @@ std::string set_operator(void* handle, const PetscCsr& m) {
   return "";
 }
 
+// This rank's part of b and of the first iterate in; the whole solution out, on
+// every rank.
 std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolveReport& report) {
   auto& s = *static_cast<Solver*>(handle);
   PetscScalar* v = nullptr;
-  PetscInt n = 0;
-  FSI_TRY(VecGetLocalSize(s.b, &n));
   FSI_TRY(VecGetArray(s.b, &v));
-  std::copy(b, b + n, v);
+  std::copy(b + s.first, b + s.last, v);
   FSI_TRY(VecRestoreArray(s.b, &v));
   FSI_TRY(VecGetArray(s.x, &v));
-  std::copy(x, x + n, v);
+  std::copy(x + s.first, x + s.last, v);
   FSI_TRY(VecRestoreArray(s.x, &v));
   FSI_TRY(KSPSetInitialGuessNonzero(s.ksp, warm && s.config.iterative ? PETSC_TRUE : PETSC_FALSE));
   FSI_TRY(KSPSolve(s.ksp, s.b, s.x));
@@ -260,9 +303,11 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   for (PetscInt k = 0; k < count; ++k) report.history.push_back(bnorm > 0 ? h[k] / bnorm : h[k]);
   report.residual = report.history.empty() ? 0 : report.history.back();
   if (reason < 0) return "PETSc: the solve did not converge (" + report.reason + ")";
-  FSI_TRY(VecGetArray(s.x, &v));
-  std::copy(v, v + n, x);
-  FSI_TRY(VecRestoreArray(s.x, &v));
+  FSI_TRY(VecScatterBegin(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
+  FSI_TRY(VecScatterEnd(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
+  FSI_TRY(VecGetArray(s.all, &v));
+  std::copy(v, v + s.n, x);
+  FSI_TRY(VecRestoreArray(s.all, &v));
   return "";
 }
 

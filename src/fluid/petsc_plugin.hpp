@@ -6,7 +6,9 @@
 //
 // Its solvers hold PETSc objects behind an opaque handle; every function reports
 // PETSc's errors as text ("" when none), never as a C++ exception across the
-// library's edge.
+// library's edge. On several MPI ranks (mpirun) every rank calls every function with
+// the whole system, each rank's matrix and vectors hold its own block of rows, and
+// every rank gets the whole solution back: the assembly is not distributed yet.
 #pragma once
 
 #include <string>
@@ -59,6 +61,6 @@ struct PetscPlugin {
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 2;
+inline constexpr int kPetscPluginVersion = 3;
 
 }  // namespace fsi

@@ -34,24 +34,27 @@ class PetscSolver final : public SparseDirectSolver {
   double residual_tolerance() const override;
 
  protected:
+  // On several ranks, the unknowns renumbered first (order_).
   void analyze_pattern(const Eigen::SparseMatrix<double>& A) override;
   void factorize_values(const Eigen::SparseMatrix<double>& A) override;
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override;
 
  private:
+  void order_for_ranks(const Eigen::SparseMatrix<double>& A);
+  Eigen::SparseMatrix<double> ordered_pressure_mass() const;
+
   std::string name_;
   LinearSolverOptions options_;
   bool iterative_;
-  const PetscPlugin* plugin_;
+  const PetscPlugin* plugin_ = nullptr;
+  int ranks_ = 1;
   void* solver_ = nullptr;
-  std::vector<char> is_pressure_;
+  std::vector<char> is_pressure_, is_pressure_ordered_;
+  // Old number → the plugin's (identity on one rank; order_for_ranks).
+  Eigen::PermutationMatrix<Eigen::Dynamic> order_;
   bool symmetric_ = false;
   Eigen::SparseMatrix<double> pressure_mass_;
-  Eigen::VectorXd last_;  // the last solution: the next solve's first iterate
+  Eigen::VectorXd last_;  // the last solution, in order_: the next solve's first iterate
 };
-
-// The number of ranks the run started with (1 without mpirun), read from the MPI
-// launcher's environment without starting MPI.
-int launched_ranks();
 
 }  // namespace fsi

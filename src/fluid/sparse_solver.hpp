@@ -35,6 +35,8 @@ struct LinearSolverOptions {
   // The iterative solver's Schur preconditioner: S_p = D − B diag(A)⁻¹ Bᵀ alone
   // ("selfp"), or minus the fluid's pressure mass matrix too (petsc_plugin.cpp).
   bool schur_mass = true;
+  // On several MPI ranks, fewer unknowns a rank than this are refused (PetscSolver).
+  int min_unknowns_per_rank = 2000;
 };
 
 class SparseDirectSolver {

@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/input_file.hpp"
+#include "common/launch.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_section.hpp"
 #include "io/output_path.hpp"
@@ -176,7 +177,13 @@ void read_linear_solver(Section& s, const Origin& origin, FluidParams& p, bool s
   p.linear_solver = s.choice("linear_solver", p.linear_solver, {"mumps", "petsc-mumps", "petsc-iterative"});
   p.linear_tol = s.number("linear_tol", p.linear_tol, {1e-15, 1e-2, true, true});
   p.linear_max_iterations = s.integer("linear_max_iterations", p.linear_max_iterations, 1, 100000);
-  if (p.linear_solver == "mumps") return;
+  if (p.linear_solver == "mumps") {
+    // Each rank would factorise the whole system alone (SPEC §13).
+    if (const int ranks = launched_ranks(); ranks > 1)
+      fail(origin, "fluid.linear_solver", "= \"mumps\" runs on one rank; this run has " + std::to_string(ranks),
+           "\"petsc-mumps\" or \"petsc-iterative\" under mpirun");
+    return;
+  }
   // The substructured solve condenses the far field with MUMPS's Schur complement,
   // which PETSc does not offer.
   if (schur_given)

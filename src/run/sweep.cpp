@@ -7,8 +7,8 @@
 
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
+#include "common/launch.hpp"
 #include "common/timer.hpp"
-#include "fluid/petsc_solver.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_path.hpp"
 #include "run/provenance.hpp"

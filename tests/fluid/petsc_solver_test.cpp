@@ -15,6 +15,8 @@
 #include "common/errors.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "fluid/petsc_solver.hpp"
+#include "support/norms.hpp"
+#include "support/stokes_mms.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi::petsc_solver_test {
@@ -45,6 +47,14 @@ struct Cavity {
   }
 };
 
+// The solver's options, allowing the few unknowns a rank of these small problems when
+// this test runs on two ranks (ctest Mpi.PetscSolversOnTwoRanks).
+LinearSolverOptions small(double tol, int max_iterations) {
+  LinearSolverOptions options(tol, max_iterations);
+  options.min_unknowns_per_rank = 1;
+  return options;
+}
+
 bool have_petsc() {
 #ifdef FSICONTACT_HAVE_PETSC
   return true;
@@ -67,7 +77,7 @@ TEST(PetscSolver, MumpsThroughPetscEqualsMumpsFromEps1e2To1e7) {
   const Cavity cavity;
   for (double eps : {1e-2, 1e-5, 1e-7}) {
     auto direct = cavity.stokes(eps), petsc = cavity.stokes(eps);
-    petsc->set_linear_solver("petsc-mumps", {});
+    petsc->set_linear_solver("petsc-mumps", small(1e-10, 1000));
     const FluidSolution expected = direct->solve();
     expect_close(petsc->solve(), expected, 1e-10, "petsc-mumps, ε = " + std::to_string(eps));
     EXPECT_EQ(petsc->solver_name(), "petsc-mumps");
@@ -84,7 +94,7 @@ TEST(PetscSolver, IterativeAgreesWithMumpsFromEps1e2To1e7InBoundedIterations) {
   std::vector<int> iterations;
   for (double eps : {1e-2, 1e-5, 1e-7}) {
     auto direct = cavity.stokes(eps), petsc = cavity.stokes(eps);
-    petsc->set_linear_solver("petsc-iterative", {1e-10, 500});
+    petsc->set_linear_solver("petsc-iterative", small(1e-10, 500));
     const FluidSolution expected = direct->solve();
     expect_close(petsc->solve(), expected, 1e-7, "petsc-iterative, ε = " + std::to_string(eps));
     ASSERT_EQ(petsc->timing().linear_iterations.size(), 1u);
@@ -107,7 +117,7 @@ TEST(PetscSolver, IterationsStayFlatAsTheMeshIsRefined) {
     const Cavity cavity(cells);
     for (bool mass : {true, false}) {
       auto petsc = cavity.stokes(1e-5);
-      LinearSolverOptions options{1e-10, 1000};
+      LinearSolverOptions options = small(1e-10, 1000);
       options.schur_mass = mass;
       petsc->set_linear_solver("petsc-iterative", options);
       petsc->solve();
@@ -125,7 +135,7 @@ TEST(PetscSolver, IterativeStartsFromTheLastSolution) {
   if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
   const Cavity cavity;
   auto petsc = cavity.stokes(1e-5), direct = cavity.stokes(1e-5);
-  petsc->set_linear_solver("petsc-iterative", {1e-10, 500});
+  petsc->set_linear_solver("petsc-iterative", small(1e-10, 500));
   petsc->solve();
   Eigen::VectorXd chi = cavity.chi();
   chi[0] = 1.0;  // one triangle more: a nearby problem
@@ -141,7 +151,7 @@ TEST(PetscSolver, AnIterationLimitIsAFailureWithTheResidualHistory) {
   if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
   const Cavity cavity;
   auto petsc = cavity.stokes(1e-5);
-  petsc->set_linear_solver("petsc-iterative", {1e-12, 2});
+  petsc->set_linear_solver("petsc-iterative", small(1e-12, 2));
   try {
     petsc->solve();
     ADD_FAILURE() << "two iterations reached 1e-12";
@@ -163,7 +173,7 @@ TEST(PetscSolver, NavierStokesThroughPetscEqualsTheDirectPath) {
   const Cavity cavity;
   const auto navier_stokes = [&](const std::string& solver) {
     auto s = cavity.stokes(1e-4, kNavierStokesSolver);
-    if (solver != kNavierStokesSolver) s->set_linear_solver(solver, {1e-11, 500});
+    if (solver != kNavierStokesSolver) s->set_linear_solver(solver, small(1e-11, 500));
     s->set_navier_stokes({1.0, 1e-10, 30, false});  // Re = ρ U L / μ = 25
     return s;
   };
@@ -172,6 +182,34 @@ TEST(PetscSolver, NavierStokesThroughPetscEqualsTheDirectPath) {
   auto petsc = navier_stokes("petsc-mumps");
   expect_close(petsc->solve(), expected, 1e-9, "petsc-mumps");
   EXPECT_GE(petsc->newton()->steps, 2);
+}
+
+// The manufactured Stokes solution (support/stokes_mms.hpp) through each PETSc solver
+// on 16, 32 and 64 cells a side: the errors of the direct path's to 1e-6 of
+// themselves, so the mini element's rates (velocity 2 in L², 1 in H¹, pressure at
+// least 1), checked again. On two ranks too (ctest Mpi.PetscSolversOnTwoRanks).
+TEST(PetscSolver, ManufacturedStokesKeepsTheMiniElementsRates) {
+  if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
+  const std::vector<std::string> dirichlet = {"left", "right", "top"};
+  for (const std::string solver : {"petsc-mumps", "petsc-iterative"}) {
+    std::vector<testing::StokesErrors> e;
+    for (int cells : {16, 32, 64}) {
+      const Mesh mesh = testing::structured_rectangle(1.0, 1.0, cells, cells);
+      const testing::StokesErrors direct = testing::stokes_mms::solve(mesh, dirichlet, "bottom");
+      e.push_back(testing::stokes_mms::solve(mesh, dirichlet, "bottom", [&](PenalisedStokes& s) {
+        s.set_linear_solver(solver, small(1e-12, 1000));
+      }));
+      EXPECT_NEAR(e.back().v_l2, direct.v_l2, 1e-6 * direct.v_l2) << solver << ", " << cells;
+      EXPECT_NEAR(e.back().v_h1, direct.v_h1, 1e-6 * direct.v_h1) << solver << ", " << cells;
+      EXPECT_NEAR(e.back().p_l2, direct.p_l2, 1e-6 * direct.p_l2) << solver << ", " << cells;
+    }
+    for (std::size_t k = 0; k + 1 < e.size(); ++k) {
+      const double h = 1.0 / (16 << k);
+      EXPECT_GE(testing::rate(e[k].v_l2, e[k + 1].v_l2, h, h / 2), 1.8) << solver;
+      EXPECT_GE(testing::rate(e[k].v_h1, e[k + 1].v_h1, h, h / 2), 0.9) << solver;
+      EXPECT_GE(testing::rate(e[k].p_l2, e[k + 1].p_l2, h, h / 2), 0.9) << solver;
+    }
+  }
 }
 
 TEST(PetscSolver, WithoutThePluginItIsASolverFailureNamingThePackage) {

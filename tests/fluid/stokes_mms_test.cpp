@@ -10,45 +10,14 @@
 #include "mesh/generated_mesh.hpp"
 #include "mesh/gmsh_io.hpp"
 #include "support/norms.hpp"
+#include "support/stokes_mms.hpp"
 #include "support/stokes_norms.hpp"
 #include "support/structured_mesh.hpp"
 
 namespace fsi::stokes_mms_test {
 namespace {
 
-constexpr double pi = std::numbers::pi;
-constexpr double mu = 1.0;
-
-Point v_exact(const Point& x) {
-  return {std::sin(pi * x.x()) * std::cos(pi * x.y()), -std::cos(pi * x.x()) * std::sin(pi * x.y())};
-}
-Eigen::Matrix2d grad_v(const Point& x) {
-  Eigen::Matrix2d g;
-  const double sx = std::sin(pi * x.x()), cx = std::cos(pi * x.x()), sy = std::sin(pi * x.y()),
-               cy = std::cos(pi * x.y());
-  g << pi * cx * cy, -pi * sx * sy, pi * sx * sy, -pi * cx * cy;
-  return g;
-}
-double p_exact(const Point& x) { return std::cos(pi * x.x()) * std::exp(x.y()); }
-Point grad_p(const Point& x) {
-  return {-pi * std::sin(pi * x.x()) * std::exp(x.y()), std::cos(pi * x.x()) * std::exp(x.y())};
-}
-// −div(2μ ε(v)) + ∇p = −μΔv + ∇p, and Δv = −2π² v for this v.
-Point body_force(const Point& x) { return 2 * pi * pi * mu * v_exact(x) + grad_p(x); }
-Point traction(const Point& x, const Point& n) {
-  const Eigen::Matrix2d g = grad_v(x);
-  return (-p_exact(x) * Eigen::Matrix2d::Identity() + mu * (g + g.transpose())) * n;
-}
-
-testing::StokesErrors solve(const Mesh& mesh, const std::vector<std::string>& dirichlet,
-                            const std::string& outlet) {
-  FluidBoundaryConditions bc;
-  for (const auto& name : dirichlet) bc.dirichlet_labels.push_back(mesh.label(name));
-  bc.g = v_exact;
-  bc.tractions.emplace_back(mesh.label(outlet), [](const Point& x) { return traction(x, Point(0, -1)); });
-  PenalisedStokes stokes(mesh, mu, 1.0, body_force, bc);
-  return testing::mini_errors(mesh, stokes.solve(), v_exact, grad_v, p_exact);
-}
+using testing::stokes_mms::solve;
 
 void check_rates(const std::vector<double>& h, const std::vector<testing::StokesErrors>& e,
                  bool pairwise) {

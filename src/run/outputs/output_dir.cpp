@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "fluid/petsc_solver.hpp"
+#include "common/launch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/case.hpp"
 #include "run/provenance.hpp"
