@@ -79,9 +79,10 @@ instrumented-build: deps
 # INSTRUMENTED_LABEL=. runs the studies too.
 INSTRUMENTED_LABEL ?= unit
 instrumented-suite: instrumented-build
+	@rm -rf $(INSTRUMENTED)/tests/gtest-xml
 	@cd $(INSTRUMENTED) && $(ASAN_ENV) ctest --output-on-failure -j $(JOBS) -L '$(INSTRUMENTED_LABEL)' \
 	  -LE fuzz --output-junit junit.xml
-	@cmake -DJUNIT=$(INSTRUMENTED)/junit.xml -DBUDGET=$(INSTRUMENTED_TEST_BUDGET) \
+	@cmake -DJUNIT=$(INSTRUMENTED)/junit.xml -DXML_DIR=$(INSTRUMENTED)/tests/gtest-xml -DBUDGET=$(INSTRUMENTED_TEST_BUDGET) \
 	  -DWHAT="the instrumented build" -P cmake/TestBudget.cmake
 
 check-instrumented: instrumented-suite fuzz-smoke

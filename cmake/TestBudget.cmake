@@ -1,5 +1,5 @@
 # Checks a ctest run's test times against a budget:
-#   cmake -DJUNIT=build/junit.xml -DBUDGET=20 [-DWHAT=Release] -P cmake/TestBudget.cmake
+#   cmake -DJUNIT=build/junit.xml -DBUDGET=20 [-DWHAT=Release] [-DXML_DIR=dir] -P cmake/TestBudget.cmake
 # Prints the ten slowest tests; fails, naming each, if one took more than BUDGET seconds.
 # A unit test over its budget is a benchmark or a study: make it smaller, or move it to
 # bench/ (docs/performance.md, "Build and test budgets").
@@ -13,6 +13,18 @@ if(NOT WHAT)
   set(WHAT "the suite")
 endif()
 file(READ "${JUNIT}" xml)
+# With XML_DIR (the instrumented build's one process per suite: cmake/GtestSuites.cmake),
+# each test's own time from GoogleTest's XML files, not the suites' from ctest's.
+if(XML_DIR)
+  string(REGEX REPLACE "<testcase name=\"[^\".]*\"[^>]*>" "" xml "${xml}")
+  file(GLOB suites "${XML_DIR}/*.xml")
+  foreach(f IN LISTS suites)
+    file(READ "${f}" suite_xml)
+    get_filename_component(suite "${f}" NAME_WE)
+    string(REPLACE "<testcase name=\"" "<testcase name=\"${suite}." suite_xml "${suite_xml}")
+    string(APPEND xml "${suite_xml}")
+  endforeach()
+endif()
 string(REPLACE "&quot;" "'" xml "${xml}")  # a CMake list is split at every ';'
 string(REPLACE ";" "," xml "${xml}")
 string(REGEX MATCHALL "<testcase name=\"[^\"]*\"[^>]* time=\"[0-9.eE+-]+\"" cases "${xml}")

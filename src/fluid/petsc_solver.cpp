@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <mutex>
+#include <numeric>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -65,9 +66,10 @@ double PetscSolver::residual_tolerance() const {
 // On several ranks each owns a contiguous block of rows (petsc_plugin.cpp); the
 // assembler numbers the unknowns field by field (v1, v2, p), so a block would be a
 // field, not a part of the domain: the pressure's block solve on one rank alone, and
-// every velocity row coupled to another rank's. METIS's nested dissection order
-// instead numbers one subdomain after the other, each block a part of the domain
-// (its separators last). Every rank computes the same order from the same matrix.
+// every velocity row coupled to another rank's. A nested dissection order instead
+// numbers one subdomain after the other, each block a part of the domain (its
+// separators last): the caller's (set_locality_order), or METIS's on the matrix's
+// graph. Every rank computes the same order from the same mesh or matrix.
 void PetscSolver::order_for_ranks(const Eigen::SparseMatrix<double>& A) {
   const Eigen::Index n = A.rows(), most = std::max<Eigen::Index>(1, n / options_.min_unknowns_per_rank);
   if (ranks_ > 1 && n / ranks_ < options_.min_unknowns_per_rank)
@@ -77,7 +79,15 @@ void PetscSolver::order_for_ranks(const Eigen::SparseMatrix<double>& A) {
                         std::to_string(most) + (most == 1 ? " rank" : " ranks"));
   order_.resize(n);
   if (ranks_ > 1) {
-    const std::vector<int> pivots = metis_ordering(A);  // pivots[k]: the k-th unknown's old number
+    std::vector<int> pivots(static_cast<std::size_t>(n));  // pivots[k]: the k-th unknown's old number
+    if (static_cast<Eigen::Index>(locality_.size()) == n) {
+      std::iota(pivots.begin(), pivots.end(), 0);
+      std::sort(pivots.begin(), pivots.end(), [this](int a, int b) {
+        return locality_[static_cast<std::size_t>(a)] < locality_[static_cast<std::size_t>(b)];
+      });
+    } else {
+      pivots = metis_ordering(A);
+    }
     for (Eigen::Index k = 0; k < n; ++k) order_.indices()[pivots[static_cast<std::size_t>(k)]] = static_cast<int>(k);
   } else {
     order_.setIdentity();

@@ -30,6 +30,8 @@ class PetscSolver final : public SparseDirectSolver {
     symmetric_ = symmetric;
   }
   bool wants_pressure_mass() const override { return iterative_ && options_.schur_mass; }
+  bool wants_locality_order() const override { return ranks_ > 1; }
+  void set_locality_order(std::vector<int> rank) override { locality_ = std::move(rank); }
   void set_pressure_mass(Eigen::SparseMatrix<double> M) override { pressure_mass_ = std::move(M); }
   double residual_tolerance() const override;
 
@@ -50,6 +52,7 @@ class PetscSolver final : public SparseDirectSolver {
   int ranks_ = 1;
   void* solver_ = nullptr;
   std::vector<char> is_pressure_, is_pressure_ordered_;
+  std::vector<int> locality_;  // set_locality_order's, or empty
   // Old number → the plugin's (identity on one rank; order_for_ranks).
   Eigen::PermutationMatrix<Eigen::Dynamic> order_;
   bool symmetric_ = false;

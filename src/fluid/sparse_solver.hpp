@@ -64,6 +64,12 @@ class SparseDirectSolver {
   // (set_pressure_mass, before each factorize: Σ_T w_T ∫_T p q on the pressure
   // unknowns, w = (1 − χ)/μ; StokesAssembler::pressure_mass).
   virtual bool wants_pressure_mass() const { return false; }
+  // Whether it distributes the unknowns over MPI ranks in blocks, which the caller
+  // then gives an order that keeps neighbours together (set_locality_order, before
+  // analyze(): rank[k] sorts unknown k; StokesAssembler::dof_rank, METIS on the vertex
+  // graph); without it the solver orders the matrix's own graph, 9 times larger.
+  virtual bool wants_locality_order() const { return false; }
+  virtual void set_locality_order(std::vector<int> /*rank*/) {}
   virtual void set_pressure_mass(Eigen::SparseMatrix<double> /*M*/) {}
   // The last solve's iterations (an iterative solver's, also when it failed; −1 for a
   // direct solver, or a solve refused before it began).

@@ -22,6 +22,7 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
     const Stopwatch clock;
     if (!analysed_) {
       solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
+      if (solver_->wants_locality_order()) solver_->set_locality_order(assembler_.dof_rank());
       solver_->analyze(K);
       analysed_ = true;
       timing_.analysis += clock.elapsed();
