@@ -2,7 +2,7 @@
 # ctest Mpi.TwoRanksGiveOneRanksAnswer (SPEC §13; issue 32): the §7.2 case (its fluid
 # at hF = 0.01, 14 000 unknowns) under `mpiexec -n 2`, for each PETSc solver, against the same run on
 # one rank: the same passes and displacement (to 1e-9, the iterative solver's to
-# 1e-7), summary.json's ranks = 2, the same files written once (nothing of the other
+# 1e-7, on a looser coupling tolerance), summary.json's ranks = 2, the same files written once (nothing of the other
 # rank's left behind), the progress printed once; a failure after validation (the
 # iteration limit) ends both ranks with status "failed" and exit 1; a mesh too small
 # for two ranks is a failure naming the limit.
@@ -21,6 +21,9 @@ keys=(--set fluid.h=0.01 --set output.png=false)
 
 for solver in petsc-mumps petsc-iterative; do
   set_solver=(--set "fluid.linear_solver=\"$solver\"")
+  # The iterative solver's passes to a looser coupling tolerance: 27 solves of 70 GMRES
+  # iterations on each of four runs took this test over its 20 s.
+  [[ $solver == petsc-iterative ]] && set_solver+=(--set coupling.tol=1e-2)
   "$program" run "${keys[@]}" "${set_solver[@]}" --out "one-$solver" 2> "one-$solver.err" > /dev/null
   mpi run "${keys[@]}" "${set_solver[@]}" --out "two-$solver" 2> "two-$solver.err" > "two-$solver.out"
   python3 - "$solver" <<'PY'

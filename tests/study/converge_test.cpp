@@ -260,9 +260,12 @@ TEST(Converge, ThePenaltyCheckContinuesOnTheFinestLevelsFluid) {
   const std::string nocontact = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/nocontact-bodyfitted.toml'";
   const std::string quiet = " --set output.png=false --set output.vtu=false";
   // On the case's meshes coarsened twice (the sanitizers' build took 67 s on the case's own).
-  testing::CliRun r = testing::run_cli("converge " + nocontact + " -q --levels 3 --set fluid.h=0.02 --set structure.h=0.03" +
+  testing::CliRun r = testing::run_cli("converge " + nocontact + " --levels 3 --set fluid.h=0.02 --set structure.h=0.03" +
                                            quiet + " --out study", dir);
   ASSERT_EQ(r.status, 0) << r.err;
+  // The case states no ε rule: converge's default is announced, and the check is in the progress.
+  EXPECT_NE(r.err.find("[eps] coupling.eps_rule = \"layer\" (converge's default"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[penalty check: level 3"), std::string::npos) << r.err;
   const auto finest = nlohmann::json::parse(testing::slurp(dir / "study/level-3/summary.json"));
   const auto check = nlohmann::json::parse(testing::slurp(dir / "study/level-3-eps/summary.json"));
   EXPECT_EQ(check["initial_state"], "given");
