@@ -159,12 +159,16 @@ Eigen::SparseMatrix<double> PetscSolver::ordered_pressure_mass() const {
     if (is_pressure_ordered_[k]) ordered_local[k] = static_cast<int>(np++);
   Eigen::PermutationMatrix<Eigen::Dynamic> q(pressure_mass_.rows());
   for (std::size_t i = 0, np = 0; i < is_pressure_.size(); ++i)
-    if (is_pressure_[i]) q.indices()[static_cast<Eigen::Index>(np++)] = ordered_local[static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)])];
+    if (is_pressure_[i]) {
+      const auto ordered = static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)]);
+      q.indices()[static_cast<Eigen::Index>(np++)] = ordered_local[ordered];
+    }
   return q * pressure_mass_ * q.transpose();
 }
 
 void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& unordered) {
-  const Eigen::SparseMatrix<double> A = ranks_ == 1 ? unordered : Eigen::SparseMatrix<double>(order_ * unordered * order_.transpose());
+  const Eigen::SparseMatrix<double> A =
+      ranks_ == 1 ? unordered : Eigen::SparseMatrix<double>(order_ * unordered * order_.transpose());
   if (wants_pressure_mass()) {
     const Eigen::SparseMatrix<double, Eigen::RowMajor> S =
         schur_preconditioner(A, is_pressure_ordered_, ordered_pressure_mass());
