@@ -48,11 +48,12 @@ NewtonSolve::Residual NewtonSolve::residual(const Eigen::VectorXd& chi, double e
   const double b0 = at_rest ? 0.0 : scale(chi, eps);
   const Stopwatch clock;
   convection_->set_picard(false);
+  whole_.prepare();  // on several ranks, each assembles its own rows: the norms are over all
   assembler_.forget_assembly();
   assembler_.assemble(chi, eps);
-  if (at_rest && !(scale_ > 0)) scale_ = assembler_.rhs().norm();
-  const Residual r{(assembler_.matrix() * assembler_.reduced(w_) - assembler_.rhs()).norm(),
-                   std::max(at_rest ? scale_ : b0, assembler_.rhs().norm())};
+  if (at_rest && !(scale_ > 0)) scale_ = whole_.norm(assembler_.rhs());
+  const Residual r{whole_.norm(assembler_.matrix() * assembler_.reduced(w_) - assembler_.rhs()),
+                   std::max(at_rest ? scale_ : b0, whole_.norm(assembler_.rhs()))};
   timing_.assembly += clock.elapsed();
   return r;
 }
@@ -64,9 +65,10 @@ double NewtonSolve::scale(const Eigen::VectorXd& chi, double eps) {
   const Stopwatch clock;
   const FluidSolution kept = w_;
   set_zero(w_);
+  whole_.prepare();
   assembler_.forget_assembly();
   assembler_.assemble(chi, eps);
-  scale_ = assembler_.rhs().norm();
+  scale_ = whole_.norm(assembler_.rhs());
   w_ = kept;
   timing_.assembly += clock.elapsed();
   return scale_;

@@ -9,19 +9,21 @@
 // complement by BoomerAMG on S_p = −C − B diag(A)⁻¹ Bᵀ ("selfp"), which follows the
 // penalty (where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
 // matrix would be off by 1/ε), less the fluid's weighted pressure mass matrix when
-// the caller gives it (set_schur_preconditioner; petsc_solver.cpp says why).
+// the caller gives it (set_pressure_mass; schur_preconditioner says why). S_p is
+// built here from the distributed operator: a rank holds its own rows only, and so
+// not the diagonal of its neighbours' velocity rows that its pressure rows need.
 //
 // The defaults are set on the objects before KSPSetFromOptions, and the split's inner
 // solvers' in PETSc's options database unless given there, so that PETSC_OPTIONS can
 // change any of them: under the prefix "fluid_" for the iterative solver (e.g.
 // "-fluid_ksp_monitor", "-fluid_fieldsplit_u_pc_type gamg"), "fluid_direct_" for MUMPS.
+#include "fluid/petsc_plugin.hpp"
+
 #include <petscksp.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <string>
-
-#include "fluid/petsc_plugin.hpp"
 
 namespace fsi {
 namespace {
@@ -32,56 +34,74 @@ std::string last_message;
 
 PetscErrorCode record_error(MPI_Comm, int, const char* function, const char*, PetscErrorCode code,
                             PetscErrorType type, const char* message, void*) {
-  if (type == PETSC_ERROR_INITIAL) last_message = std::string(message ? message : "") + " (in " + function + ")";
+  if (type == PETSC_ERROR_INITIAL)
+    last_message = std::string(message ? message : "") + " (in " + function + ")";
   return code;
 }
 
 std::string error_text(PetscErrorCode code, const char* call) {
   const char* text = nullptr;
   PetscErrorMessage(code, &text, nullptr);
-  std::string out = std::string("PETSc: ") + call + ": " + (text ? text : "error " + std::to_string(code));
+  std::string out =
+      std::string("PETSc: ") + call + ": " + (text ? text : "error " + std::to_string(code));
   if (!last_message.empty()) out += ": " + last_message;
   last_message.clear();
   return out;
 }
 
 // Each PETSc call: its error returned as text from the enclosing function.
-#define FSI_TRY(call)                                       \
-  do {                                                      \
-    const PetscErrorCode code_ = (call);                    \
-    if (code_) return error_text(code_, #call);             \
+#define FSI_TRY(call)                           \
+  do {                                          \
+    const PetscErrorCode code_ = (call);        \
+    if (code_) return error_text(code_, #call); \
   } while (0)
 
-// Every rank is given the whole system (petsc_plugin.hpp) and owns a contiguous
-// block of its rows, PETSc's even split: [first, last) of the unknowns, and of the
-// pressure's unknowns (the Schur preconditioner's rows) [p_first, p_last).
+// Every rank owns a contiguous block of the rows, PETSc's even split (row_block):
+// [first, last) of the unknowns, and of the pressure's unknowns (the Schur
+// preconditioner's rows) [p_first, p_last); it is given those rows alone
+// (petsc_plugin.hpp).
 struct Solver {
   PetscSolverConfig config;
   PetscInt n = -1, first = 0, last = 0, p_first = 0, p_last = 0;
   Mat A = nullptr;
-  Mat S = nullptr;  // the Schur preconditioning matrix, if given
+  Mat M = nullptr;  // the pressure mass matrix M_w, if given
+  Mat S = nullptr;  // the Schur preconditioning matrix built from A and M
   Vec b = nullptr, x = nullptr;
-  Vec all = nullptr;              // x gathered on every rank
+  Vec all = nullptr;  // x gathered on every rank
   VecScatter to_all = nullptr;
   KSP ksp = nullptr;
   IS fields[2] = {nullptr, nullptr};
   std::vector<PetscReal> history;
 };
 
+void row_block(int n, int& first, int& last) {
+  PetscMPIInt rank = 0, ranks = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  const int base = n / ranks, extra = n % ranks;
+  first = rank * base + std::min(rank, extra);
+  last = first + base + (rank < extra ? 1 : 0);
+}
+
+std::string sum_over_ranks(double* values, int count) {
+  FSI_TRY(MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD)
+              ? PETSC_ERR_MPI
+              : 0);
+  return "";
+}
+
 std::string set_layout(Solver& s, PetscInt n) {
   if (s.n == n) return "";
-  if (s.n >= 0) return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(n);
-  PetscMPIInt rank = 0, ranks = 1;
-  FSI_TRY(MPI_Comm_rank(PETSC_COMM_WORLD, &rank) ? PETSC_ERR_MPI : 0);
-  FSI_TRY(MPI_Comm_size(PETSC_COMM_WORLD, &ranks) ? PETSC_ERR_MPI : 0);
-  const PetscInt base = n / ranks, extra = n % ranks;
-  s.n = n;
-  s.first = rank * base + std::min<PetscInt>(rank, extra);
-  s.last = s.first + base + (rank < extra ? 1 : 0);
+  if (s.n >= 0)
+    return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(n);
+  int first = 0, last = 0;
+  row_block(n, first, last);
+  s.n = n, s.first = first, s.last = last;
   const auto& p = s.config.is_pressure;
   if (!p.empty()) {
     s.p_first = static_cast<PetscInt>(std::count(p.begin(), p.begin() + s.first, 1));
-    s.p_last = s.p_first + static_cast<PetscInt>(std::count(p.begin() + s.first, p.begin() + s.last, 1));
+    s.p_last =
+        s.p_first + static_cast<PetscInt>(std::count(p.begin() + s.first, p.begin() + s.last, 1));
   }
   return "";
 }
@@ -159,13 +179,14 @@ std::string split_fields(Solver& s) {
     return "the field split needs velocity and pressure unknowns";
   if (std::string e = set_layout(s, static_cast<PetscInt>(p.size())); !e.empty()) return e;
   std::vector<PetscInt> index[2];
-  for (PetscInt i = s.first; i < s.last; ++i) index[p[static_cast<std::size_t>(i)] ? 1 : 0].push_back(i);
+  for (PetscInt i = s.first; i < s.last; ++i)
+    index[p[static_cast<std::size_t>(i)] ? 1 : 0].push_back(i);
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
   const char* names[2] = {"u", "p"};
   for (int f = 0; f < 2; ++f) {
-    FSI_TRY(ISCreateGeneral(PETSC_COMM_WORLD, static_cast<PetscInt>(index[f].size()), index[f].data(),
-                            PETSC_COPY_VALUES, &s.fields[f]));
+    FSI_TRY(ISCreateGeneral(PETSC_COMM_WORLD, static_cast<PetscInt>(index[f].size()),
+                            index[f].data(), PETSC_COPY_VALUES, &s.fields[f]));
     FSI_TRY(PCFieldSplitSetIS(pc, names[f], s.fields[f]));
   }
   return "";
@@ -176,6 +197,7 @@ void destroy(void* handle) {
   if (!s) return;
   KSPDestroy(&s->ksp);
   MatDestroy(&s->A);
+  MatDestroy(&s->M);
   MatDestroy(&s->S);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
@@ -189,11 +211,13 @@ void destroy(void* handle) {
 std::string make_ksp(Solver& s) {
   FSI_TRY(KSPCreate(PETSC_COMM_WORLD, &s.ksp));
   FSI_TRY(KSPSetOptionsPrefix(s.ksp, s.config.iterative ? "fluid_" : "fluid_direct_"));
-  const std::string e = s.config.iterative ? set_iterative(s.ksp) : set_direct(s.ksp, s.config.symmetric);
+  const std::string e =
+      s.config.iterative ? set_iterative(s.ksp) : set_direct(s.ksp, s.config.symmetric);
   if (!e.empty()) return e;
   FSI_TRY(KSPSetTolerances(s.ksp, s.config.tol, 0.0, 1e30, s.config.max_iterations));
   s.history.resize(static_cast<std::size_t>(s.config.max_iterations) + 1);
-  FSI_TRY(KSPSetResidualHistory(s.ksp, s.history.data(), static_cast<PetscInt>(s.history.size()), PETSC_TRUE));
+  FSI_TRY(KSPSetResidualHistory(s.ksp, s.history.data(), static_cast<PetscInt>(s.history.size()),
+                                PETSC_TRUE));
   FSI_TRY(KSPSetFromOptions(s.ksp));
   if (s.config.iterative) return split_fields(s);
   return "";
@@ -208,29 +232,70 @@ void* create(const PetscSolverConfig& config, std::string& error) {
   return nullptr;
 }
 
-// A new matrix holding m (its pattern and values), this rank's rows [first, last)
-// of it: sequential on one rank, distributed on several.
+// A new matrix holding m, this rank's rows [first, last) of an n × n matrix (its
+// pattern and values): sequential on one rank, distributed on several.
 std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& out) {
+  if (m.first != first || m.last != last)
+    return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) +
+           ") given, this rank's are [" + std::to_string(first) + ", " + std::to_string(last) + ")";
+  static_assert(sizeof(PetscInt) == sizeof(int), "PetscCsr's indices are PETSc's");
   FSI_TRY(MatCreate(PETSC_COMM_WORLD, &out));
   FSI_TRY(MatSetSizes(out, last - first, last - first, m.n, m.n));
   FSI_TRY(MatSetType(out, MATAIJ));
-  const int offset = m.row_start[first];
-  std::vector<PetscInt> rows(m.row_start + first, m.row_start + last + 1);
-  for (PetscInt& r : rows) r -= offset;
-  const std::vector<PetscInt> cols(m.column + offset, m.column + m.row_start[last]);
   // Each call does nothing on the other type's matrix.
-  FSI_TRY(MatSeqAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value + offset));
-  FSI_TRY(MatMPIAIJSetPreallocationCSR(out, rows.data(), cols.data(), m.value + offset));
+  FSI_TRY(MatSeqAIJSetPreallocationCSR(out, m.row_start, m.column, m.value));
+  FSI_TRY(MatMPIAIJSetPreallocationCSR(out, m.row_start, m.column, m.value));
   return "";
 }
 
 // A new matrix each time (its pattern is fixed, but its set-up is small beside the
 // multigrid's that follows).
-std::string set_schur_preconditioner(void* handle, const PetscCsr& m) {
+std::string set_pressure_mass(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
+  FSI_TRY(MatDestroy(&s.M));
+  return matrix_from(m, s.p_first, s.p_last, s.M);
+}
+
+// What schur_preconditioner makes and then destroys, destroyed on every path.
+struct SchurScratch {
+  Mat up = nullptr, pu = nullptr, pp = nullptr;
+  Vec diagonal = nullptr, inverse = nullptr;
+  ~SchurScratch() {
+    MatDestroy(&up), MatDestroy(&pu), MatDestroy(&pp);
+    VecDestroy(&diagonal), VecDestroy(&inverse);
+  }
+};
+
+// S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w for K = [A_u Bᵀ; B D] split by the fields (D = −C,
+// so S_p, like the Schur complement, is negative definite): PETSc's "selfp", which
+// follows the penalty (diag(A_u) holds (1/ε)χM), less the fluid's pressure mass matrix
+// M_w (w = (1 − χ)/μ), the Stokes Schur complement's spectral equivalent where χ = 0,
+// which selfp underestimates on smooth pressures by ~h² (measured: 466 GMRES
+// iterations at h = 0.005 on the §7.2 box with selfp alone, 61–71 with M_w from
+// h = 0.02 to 0.0025; docs/performance.md "PETSc"). Products of distributed blocks,
+// so that a rank needs no row of another's.
+std::string schur_preconditioner(Solver& s) {
+  SchurScratch x;
+  FSI_TRY(MatCreateVecs(s.A, nullptr, &x.diagonal));
+  FSI_TRY(MatGetDiagonal(s.A, x.diagonal));
+  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[0], s.fields[1], MAT_INITIAL_MATRIX, &x.up));
+  FSI_TRY(MatCreateVecs(x.up, nullptr,
+                        &x.inverse));  // laid out as B^T's rows: this rank's velocity rows
+  const PetscScalar* d = nullptr;
+  PetscScalar* inverse = nullptr;
+  FSI_TRY(VecGetArrayRead(x.diagonal, &d));
+  FSI_TRY(VecGetArray(x.inverse, &inverse));
+  for (PetscInt i = s.first, k = 0; i < s.last; ++i)
+    if (!s.config.is_pressure[static_cast<std::size_t>(i)]) inverse[k++] = 1.0 / d[i - s.first];
+  FSI_TRY(VecRestoreArray(x.inverse, &inverse));
+  FSI_TRY(VecRestoreArrayRead(x.diagonal, &d));
+  FSI_TRY(MatDiagonalScale(x.up, x.inverse, nullptr));
+  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[0], MAT_INITIAL_MATRIX, &x.pu));
+  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[1], MAT_INITIAL_MATRIX, &x.pp));
   FSI_TRY(MatDestroy(&s.S));
-  if (s.p_last - s.p_first > m.n) return "the Schur preconditioner is smaller than the pressure's unknowns";
-  if (std::string e = matrix_from(m, s.p_first, s.p_last, s.S); !e.empty()) return e;
+  FSI_TRY(MatMatMult(x.pu, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &s.S));
+  FSI_TRY(MatAYPX(s.S, -1.0, x.pp, DIFFERENT_NONZERO_PATTERN));  // S = D − B diag(A_u)⁻¹ Bᵀ
+  if (s.M) FSI_TRY(MatAXPY(s.S, -1.0, s.M, DIFFERENT_NONZERO_PATTERN));
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
   FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.S));
@@ -251,11 +316,14 @@ std::string first_operator(Solver& s, const PetscCsr& m) {
 
 // This rank's rows' values, on the pattern fixed by the first call.
 std::string update_values(Solver& s, const PetscCsr& m) {
-  if (m.n != s.n) return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
-  static_assert(sizeof(PetscInt) == sizeof(int), "PetscCsr's indices are PETSc's");
+  if (m.n != s.n)
+    return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
+  if (m.first != s.first || m.last != s.last)
+    return "the operator's rows given are not this rank's";
   for (PetscInt r = s.first; r < s.last; ++r) {
-    const int begin = m.row_start[r];
-    FSI_TRY(MatSetValues(s.A, 1, &r, m.row_start[r + 1] - begin, m.column + begin, m.value + begin, INSERT_VALUES));
+    const int begin = m.row_start[r - s.first];
+    FSI_TRY(MatSetValues(s.A, 1, &r, m.row_start[r - s.first + 1] - begin, m.column + begin,
+                         m.value + begin, INSERT_VALUES));
   }
   FSI_TRY(MatAssemblyBegin(s.A, MAT_FINAL_ASSEMBLY));
   FSI_TRY(MatAssemblyEnd(s.A, MAT_FINAL_ASSEMBLY));
@@ -265,6 +333,8 @@ std::string update_values(Solver& s, const PetscCsr& m) {
 std::string set_operator(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
   if (std::string e = s.A ? update_values(s, m) : first_operator(s, m); !e.empty()) return e;
+  if (s.config.iterative && s.M)
+    if (std::string e = schur_preconditioner(s); !e.empty()) return e;
   FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
   FSI_TRY(KSPSetUp(s.ksp));  // the factorisation, or the preconditioner's set-up
   PC pc;
@@ -272,7 +342,8 @@ std::string set_operator(void* handle, const PetscCsr& m) {
   PCFailedReason failed = PC_NOERROR;
   FSI_TRY(PCGetFailedReason(pc, &failed));
   if (failed != PC_NOERROR)
-    return std::string("PETSc: the ") + (s.config.iterative ? "preconditioner's set-up" : "factorisation") +
+    return std::string("PETSc: the ") +
+           (s.config.iterative ? "preconditioner's set-up" : "factorisation") +
            " failed: " + PCFailedReasons[failed];
   return "";
 }
@@ -311,12 +382,14 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   return "";
 }
 
-const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,   create, set_operator, set_schur_preconditioner,
-                             solve,              destroy};
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, row_block,
+                             sum_over_ranks,      create,     set_operator,
+                             set_pressure_mass,   solve,      destroy};
 
 }  // namespace
 }  // namespace fsi
 
-extern "C" __attribute__((visibility("default"))) const fsi::PetscPlugin* fsicontact_petsc_plugin() {
+extern "C" __attribute__((visibility("default"))) const fsi::PetscPlugin*
+fsicontact_petsc_plugin() {
   return &fsi::kPlugin;
 }

@@ -6,9 +6,10 @@
 //
 // Its solvers hold PETSc objects behind an opaque handle; every function reports
 // PETSc's errors as text ("" when none), never as a C++ exception across the
-// library's edge. On several MPI ranks (mpirun) every rank calls every function with
-// the whole system, each rank's matrix and vectors hold its own block of rows, and
-// every rank gets the whole solution back: the assembly is not distributed yet.
+// library's edge. On several MPI ranks (mpirun) every rank calls every function, each
+// with its own block of rows (row_block) of the operator and the pressure mass matrix,
+// which it alone assembled (StokesAssembler::share_rows); every rank gets the whole
+// solution back.
 #pragma once
 
 #include <string>
@@ -16,11 +17,13 @@
 
 namespace fsi {
 
-// One square matrix, compressed rows (0-based, rows sorted). The pattern of every call
-// for one solver is the first call's (SparseDirectSolver checks it).
+// Rows [first, last) of a square n × n matrix, compressed (row_start[0] = 0, columns
+// 0-based and sorted in each row). The pattern of every call for one solver is the
+// first call's (SparseDirectSolver checks it).
 struct PetscCsr {
   int n = 0;
-  const int* row_start = nullptr;  // n + 1
+  int first = 0, last = 0;
+  const int* row_start = nullptr;  // last − first + 1
   const int* column = nullptr;
   const double* value = nullptr;
 };
@@ -49,18 +52,26 @@ struct PetscPlugin {
   // handler set to return, its signal handlers off (the program has its own). Fills
   // the rank and the number of ranks of the run. "" or the error.
   std::string (*initialise)(int& rank, int& ranks);
+  // This rank's block [first, last) of n unknowns: PETSc's even split, rank by rank.
+  void (*row_block)(int n, int& first, int& last);
+  // values[0..count) summed over the ranks, in place on every rank (MPI_Allreduce);
+  // "" or the error.
+  std::string (*sum_over_ranks)(double* values, int count);
   // A solver (null and `error` set if it cannot be made).
   void* (*create)(const PetscSolverConfig& config, std::string& error);
   // The operator: its first call fixes the pattern; every call refactorises
   // (direct) or rebuilds the preconditioner (iterative).
   std::string (*set_operator)(void* solver, const PetscCsr& A);
-  // The Schur complement's preconditioning matrix on the pressure unknowns (iterative),
-  // before set_operator; without it, PETSc's S_p = D − B diag(A)⁻¹ Bᵀ.
-  std::string (*set_schur_preconditioner)(void* solver, const PetscCsr& S);
-  // x with A x = b; x holds the initial guess if `warm` (iterative).
+  // The pressure mass matrix M_w on the pressure unknowns, this rank's rows of it
+  // (iterative), before set_operator: the Schur preconditioner is then
+  // S_p = D − B diag(A)⁻¹ Bᵀ − M_w, built from the operator by PETSc (without it,
+  // PETSc's selfp, the same less M_w).
+  std::string (*set_pressure_mass)(void* solver, const PetscCsr& M);
+  // x with A x = b, both of the whole size: this rank's rows [first, last) of b are
+  // read; x holds the initial guess if `warm` (iterative), the whole solution on return.
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 3;
+inline constexpr int kPetscPluginVersion = 4;
 
 }  // namespace fsi

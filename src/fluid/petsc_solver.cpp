@@ -1,6 +1,7 @@
 #include "fluid/petsc_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <numeric>
@@ -19,7 +20,8 @@ const PetscPlugin* load() {
   // parallel MUMPS must bind to OpenMPI's and their own instead.
   const PetscPlugin* plugin = load_plugin_table<PetscPlugin>(
       "libfsicontact_petsc.so", "fsicontact_petsc_plugin", "the PETSc plugin",
-      "PETSc comes from the Debian package libpetsc-real-dev, and this program was built without it if the file is "
+      "PETSc comes from the Debian package libpetsc-real-dev, and this program was built without "
+      "it if the file is "
       "missing; fluid.linear_solver = \"mumps\" needs no PETSc",
       kPetscPluginVersion, true);
   return plugin;  // never unloaded: PETSc and MPI are finalised at exit
@@ -66,126 +68,177 @@ double PetscSolver::residual_tolerance() const {
 // On several ranks each owns a contiguous block of rows (petsc_plugin.cpp); the
 // assembler numbers the unknowns field by field (v1, v2, p), so a block would be a
 // field, not a part of the domain: the pressure's block solve on one rank alone, and
-// every velocity row coupled to another rank's. A nested dissection order instead
-// numbers one subdomain after the other, each block a part of the domain (its
-// separators last): the caller's (set_locality_order), or METIS's on the matrix's
-// graph. Every rank computes the same order from the same mesh or matrix.
-void PetscSolver::order_for_ranks(const Eigen::SparseMatrix<double>& A) {
-  const Eigen::Index n = A.rows(), most = std::max<Eigen::Index>(1, n / options_.min_unknowns_per_rank);
+// every velocity row coupled to another rank's. An order that keeps neighbours
+// together instead makes each block a part of the domain: the caller's
+// (set_locality_order), or METIS's nested dissection of the matrix's graph. Every rank
+// computes the same order from the same mesh or matrix.
+void PetscSolver::require_enough_unknowns(Eigen::Index n) const {
+  const Eigen::Index most = std::max<Eigen::Index>(1, n / options_.min_unknowns_per_rank);
   if (ranks_ > 1 && n / ranks_ < options_.min_unknowns_per_rank)
-    throw SolverFailure(name_ + ": " + std::to_string(n) + " unknowns on " + std::to_string(ranks_) +
-                        " ranks are fewer than " + std::to_string(options_.min_unknowns_per_rank) +
-                        " a rank, too few to keep a rank busy between its exchanges: run on at most " +
-                        std::to_string(most) + (most == 1 ? " rank" : " ranks"));
+    throw SolverFailure(
+        name_ + ": " + std::to_string(n) + " unknowns on " + std::to_string(ranks_) +
+        " ranks are fewer than " + std::to_string(options_.min_unknowns_per_rank) +
+        " a rank, too few to keep a rank busy between its exchanges: run on at most " +
+        std::to_string(most) + (most == 1 ? " rank" : " ranks"));
+}
+
+// pivots[k]: the k-th unknown's old number. This rank's block of rows in that order.
+void PetscSolver::set_order(const std::vector<int>& pivots) {
+  const auto n = static_cast<Eigen::Index>(pivots.size());
   order_.resize(n);
-  if (ranks_ > 1) {
-    std::vector<int> pivots(static_cast<std::size_t>(n));  // pivots[k]: the k-th unknown's old number
-    if (static_cast<Eigen::Index>(locality_.size()) == n) {
-      std::iota(pivots.begin(), pivots.end(), 0);
-      std::sort(pivots.begin(), pivots.end(), [this](int a, int b) {
-        return locality_[static_cast<std::size_t>(a)] < locality_[static_cast<std::size_t>(b)];
-      });
-    } else {
-      pivots = metis_ordering(A);
-    }
-    for (Eigen::Index k = 0; k < n; ++k) order_.indices()[pivots[static_cast<std::size_t>(k)]] = static_cast<int>(k);
-  } else {
-    order_.setIdentity();
-  }
+  for (Eigen::Index k = 0; k < n; ++k)
+    order_.indices()[pivots[static_cast<std::size_t>(k)]] = static_cast<int>(k);
+  plugin_->row_block(static_cast<int>(n), first_, last_);
+}
+
+void PetscSolver::set_locality_order(std::vector<int> rank) {
+  require_enough_unknowns(static_cast<Eigen::Index>(rank.size()));
+  std::vector<int> pivots(rank.size());
+  std::iota(pivots.begin(), pivots.end(), 0);
+  std::sort(pivots.begin(), pivots.end(), [&rank](int a, int b) {
+    return rank[static_cast<std::size_t>(a)] < rank[static_cast<std::size_t>(b)];
+  });
+  set_order(pivots);
+}
+
+void PetscSolver::order_for_ranks(const Eigen::SparseMatrix<double>& A) {
+  require_enough_unknowns(A.rows());
+  std::vector<int> pivots(static_cast<std::size_t>(A.rows()));
+  if (ranks_ > 1)
+    pivots = metis_ordering(A);
+  else
+    std::iota(pivots.begin(), pivots.end(), 0);
+  set_order(pivots);
+}
+
+std::vector<char> PetscSolver::rows_here() const {
+  if (ranks_ == 1) return {};
+  std::vector<char> here(static_cast<std::size_t>(order_.size()));
+  for (Eigen::Index i = 0; i < order_.size(); ++i)
+    here[static_cast<std::size_t>(i)] =
+        order_.indices()[i] >= first_ && order_.indices()[i] < last_;
+  return here;
+}
+
+double PetscSolver::sum_over_ranks(double value) const {
+  if (ranks_ == 1) return value;
+  if (const std::string error = plugin_->sum_over_ranks(&value, 1); !error.empty())
+    throw SolverFailure(name_ + ": " + error);
+  return value;
+}
+
+double PetscSolver::norm_over_ranks(const Eigen::VectorXd& v) const {
+  return std::sqrt(sum_over_ranks(v.squaredNorm()));
+}
+
+bool PetscSolver::on_every_rank(bool ok) const {
+  return sum_over_ranks(ok ? 0.0 : 1.0) == 0.0;
 }
 
 void PetscSolver::analyze_pattern(const Eigen::SparseMatrix<double>& A) {
   if (solver_) plugin_->destroy(solver_), solver_ = nullptr;
   if (iterative_ && static_cast<Eigen::Index>(is_pressure_.size()) != A.rows())
     throw std::logic_error(name_ + ": describe_system() before analyze(), one entry per unknown");
-  order_for_ranks(A);
+  if (order_.size() != A.rows()) order_for_ranks(A);
   std::vector<char> is_pressure(is_pressure_.size());
   for (std::size_t i = 0; i < is_pressure_.size(); ++i)
-    is_pressure[static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)])] = is_pressure_[i];
-  PetscSolverConfig config{iterative_, symmetric_, options_.tol, options_.max_iterations, std::move(is_pressure)};
+    is_pressure[static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)])] =
+        is_pressure_[i];
+  const auto pressures = [&is_pressure](int from, int to) {
+    return is_pressure.empty() ? 0
+                               : static_cast<int>(std::count(is_pressure.begin() + from,
+                                                             is_pressure.begin() + to, 1));
+  };
+  p_first_ = pressures(0, first_);
+  p_last_ = p_first_ + pressures(first_, last_);
+  PetscSolverConfig config{iterative_, symmetric_, options_.tol, options_.max_iterations,
+                           std::move(is_pressure)};
   is_pressure_ordered_ = config.is_pressure;
   std::string error;
   solver_ = plugin_->create(config, error);
   if (!solver_) throw SolverFailure(name_ + ": " + error);
-  last_.resize(0);
+  last_solution_.resize(0);
 }
 
 namespace {
 
-// S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w for K = [A_u Bᵀ; B D] split by is_pressure (D = −C,
-// so S_p, like the Schur complement, is negative definite): PETSc's "selfp", which
-// follows the penalty (diag(A_u) holds (1/ε)χM), less the fluid's pressure mass matrix
-// M_w (w = (1 − χ)/μ), the Stokes Schur complement's spectral equivalent where χ = 0,
-// which selfp underestimates on smooth pressures by ~h² (measured:
-// docs/performance.md "PETSc").
-Eigen::SparseMatrix<double, Eigen::RowMajor> schur_preconditioner(const Eigen::SparseMatrix<double>& K,
-                                                                   const std::vector<char>& is_pressure,
-                                                                   const Eigen::SparseMatrix<double>& mass) {
-  std::vector<int> local(is_pressure.size());
-  int nu = 0, np = 0;
-  for (std::size_t i = 0; i < is_pressure.size(); ++i) local[i] = is_pressure[i] ? np++ : nu++;
-  std::vector<Eigen::Triplet<double>> pu, up, pp;
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(nu);
-  for (int j = 0; j < K.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it) {
-      const auto i = static_cast<std::size_t>(it.row());
-      const int r = local[i], c = local[static_cast<std::size_t>(j)];
-      if (is_pressure[i] && is_pressure[static_cast<std::size_t>(j)]) pp.emplace_back(r, c, it.value());
-      else if (is_pressure[i]) pu.emplace_back(r, c, it.value());
-      else if (is_pressure[static_cast<std::size_t>(j)]) up.emplace_back(r, c, it.value());
-      else if (r == c) diagonal[r] = it.value();
-    }
-  Eigen::SparseMatrix<double> Kpu(np, nu), Kup(nu, np), S(np, np);
-  Kpu.setFromTriplets(pu.begin(), pu.end());
-  Kup.setFromTriplets(up.begin(), up.end());
-  S.setFromTriplets(pp.begin(), pp.end());
-  // diag(A_u)⁻¹ Bᵀ in place: Eigen's sparse = diagonal × sparse inserted entry by entry,
-  // 20 % of a solve's time at 223 256 unknowns (perf).
-  for (int j = 0; j < Kup.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(Kup, j); it; ++it) it.valueRef() /= diagonal[it.row()];
-  S -= Kpu * Kup;
-  if (mass.rows() == np) S -= mass;
-  return S;
+// Rows [first, last) of P A Pᵀ (P: old number i → to[i]), compressed by rows, each
+// row's columns sorted, straight from A's columns in one pass. A holds, on several
+// ranks, this rank's rows alone: P A Pᵀ and then its rows would be two more copies.
+struct OrderedRows {
+  std::vector<int> start, column;
+  std::vector<double> value;
+  PetscCsr csr(int n, int first, int last) const {
+    return {n, first, last, start.data(), column.data(), value.data()};
+  }
+};
+
+OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, int first, int last) {
+  OrderedRows r;
+  r.start.assign(static_cast<std::size_t>(last - first) + 1, 0);
+  const auto held = [&](int i) { return to[i] >= first && to[i] < last; };
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (held(static_cast<int>(it.row())))
+        ++r.start[static_cast<std::size_t>(to[it.row()] - first) + 1];
+  std::partial_sum(r.start.begin(), r.start.end(), r.start.begin());
+  r.column.resize(static_cast<std::size_t>(r.start.back()));
+  r.value.resize(r.column.size());
+  std::vector<int> next(r.start.begin(), r.start.end() - 1);
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (held(static_cast<int>(it.row()))) {
+        const auto k =
+            static_cast<std::size_t>(next[static_cast<std::size_t>(to[it.row()] - first)]++);
+        r.column[k] = to[j], r.value[k] = it.value();
+      }
+  std::vector<std::pair<int, double>> row;
+  for (std::size_t i = 0; i + 1 < r.start.size(); ++i) {
+    const auto b = static_cast<std::size_t>(r.start[i]),
+               e = static_cast<std::size_t>(r.start[i + 1]);
+    row.clear();
+    for (std::size_t k = b; k < e; ++k) row.emplace_back(r.column[k], r.value[k]);
+    std::sort(row.begin(), row.end());
+    for (std::size_t k = b; k < e; ++k)
+      r.column[k] = row[k - b].first, r.value[k] = row[k - b].second;
+  }
+  return r;
 }
 
 }  // namespace
 
-// The pressure mass matrix, its rows and columns numbered as the pressure's unknowns
-// are in order_.
-Eigen::SparseMatrix<double> PetscSolver::ordered_pressure_mass() const {
-  if (ranks_ == 1 || pressure_mass_.rows() == 0) return pressure_mass_;
-  std::vector<int> ordered_local(is_pressure_ordered_.size(), -1);
+// The pressure's unknowns' numbers among themselves in order_'s order (the pressure
+// mass matrix's rows and columns in the plugin's numbering), by their old ones.
+std::vector<int> PetscSolver::pressure_order() const {
+  std::vector<int> ordered_local(is_pressure_ordered_.size(), -1), to;
   for (std::size_t k = 0, np = 0; k < ordered_local.size(); ++k)
     if (is_pressure_ordered_[k]) ordered_local[k] = static_cast<int>(np++);
-  Eigen::PermutationMatrix<Eigen::Dynamic> q(pressure_mass_.rows());
-  for (std::size_t i = 0, np = 0; i < is_pressure_.size(); ++i)
-    if (is_pressure_[i]) {
-      const auto ordered = static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)]);
-      q.indices()[static_cast<Eigen::Index>(np++)] = ordered_local[ordered];
-    }
-  return q * pressure_mass_ * q.transpose();
+  for (std::size_t i = 0; i < is_pressure_.size(); ++i)
+    if (is_pressure_[i])
+      to.push_back(
+          ordered_local[static_cast<std::size_t>(order_.indices()[static_cast<Eigen::Index>(i)])]);
+  return to;
 }
 
-void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& unordered) {
-  const Eigen::SparseMatrix<double> A =
-      ranks_ == 1 ? unordered : Eigen::SparseMatrix<double>(order_ * unordered * order_.transpose());
-  if (wants_pressure_mass()) {
-    const Eigen::SparseMatrix<double, Eigen::RowMajor> S =
-        schur_preconditioner(A, is_pressure_ordered_, ordered_pressure_mass());
-    const PetscCsr csr{static_cast<int>(S.rows()), S.outerIndexPtr(), S.innerIndexPtr(), S.valuePtr()};
-    if (const std::string error = plugin_->set_schur_preconditioner(solver_, csr); !error.empty())
+void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
+  if (wants_pressure_mass() && pressure_mass_.rows() > 0) {
+    const std::vector<int> to = pressure_order();
+    const OrderedRows M = ordered_rows(pressure_mass_, to.data(), p_first_, p_last_);
+    const auto np = static_cast<int>(pressure_mass_.rows());
+    if (const std::string error = plugin_->set_pressure_mass(solver_, M.csr(np, p_first_, p_last_));
+        !error.empty())
       throw SolverFailure(name_ + ": " + error);
   }
-  // PETSc's AIJ stores rows; our matrices are stored by column (the transpose's rows).
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = A;
-  const PetscCsr csr{static_cast<int>(rows.rows()), rows.outerIndexPtr(), rows.innerIndexPtr(), rows.valuePtr()};
-  if (const std::string error = plugin_->set_operator(solver_, csr); !error.empty())
+  const OrderedRows rows = ordered_rows(A, order_.indices().data(), first_, last_);
+  const auto n = static_cast<int>(A.rows());
+  if (const std::string error = plugin_->set_operator(solver_, rows.csr(n, first_, last_));
+      !error.empty())
     throw SolverFailure(name_ + ": " + error);
 }
 
 Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
-  const bool warm = last_.size() == rhs.size();
-  Eigen::VectorXd x = warm ? last_ : Eigen::VectorXd::Zero(rhs.size());
+  const bool warm = last_solution_.size() == rhs.size();
+  Eigen::VectorXd x = warm ? last_solution_ : Eigen::VectorXd::Zero(rhs.size());
   const Eigen::VectorXd b = order_ * rhs;
   PetscSolveReport report;
   const std::string error = plugin_->solve(solver_, b.data(), x.data(), warm, report);
@@ -193,13 +246,15 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   if (!error.empty()) {
     std::string history;
     const std::size_t n = report.history.size(), shown = std::min<std::size_t>(n, 8);
-    for (std::size_t k = n - shown; k < n; ++k) history += (history.empty() ? "" : ", ") + approx(report.history[k], 2);
-    throw SolverFailure(name_ + ": " + error + " after " + std::to_string(report.iterations) +
-                        " iterations; relative residuals, the last " + std::to_string(shown) + ": " + history +
-                        " (fluid.linear_tol = " + shortest(options_.tol) +
-                        ", fluid.linear_max_iterations = " + std::to_string(options_.max_iterations) + ")");
+    for (std::size_t k = n - shown; k < n; ++k)
+      history += (history.empty() ? "" : ", ") + approx(report.history[k], 2);
+    throw SolverFailure(
+        name_ + ": " + error + " after " + std::to_string(report.iterations) +
+        " iterations; relative residuals, the last " + std::to_string(shown) + ": " + history +
+        " (fluid.linear_tol = " + shortest(options_.tol) +
+        ", fluid.linear_max_iterations = " + std::to_string(options_.max_iterations) + ")");
   }
-  last_ = x;
+  last_solution_ = x;
   return order_.transpose() * x;
 }
 

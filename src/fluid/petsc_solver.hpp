@@ -31,8 +31,12 @@ class PetscSolver final : public SparseDirectSolver {
   }
   bool wants_pressure_mass() const override { return iterative_ && options_.schur_mass; }
   bool wants_locality_order() const override { return ranks_ > 1; }
-  void set_locality_order(std::vector<int> rank) override { locality_ = std::move(rank); }
+  // The unknowns sorted by `rank`: PETSc's blocks of rows then parts of the domain.
+  void set_locality_order(std::vector<int> rank) override;
+  std::vector<char> rows_here() const override;
   void set_pressure_mass(Eigen::SparseMatrix<double> M) override { pressure_mass_ = std::move(M); }
+  double norm_over_ranks(const Eigen::VectorXd& v) const override;
+  bool on_every_rank(bool ok) const override;
   double residual_tolerance() const override;
 
  protected:
@@ -42,8 +46,11 @@ class PetscSolver final : public SparseDirectSolver {
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override;
 
  private:
+  void require_enough_unknowns(Eigen::Index n) const;
+  void set_order(const std::vector<int>& pivots);
   void order_for_ranks(const Eigen::SparseMatrix<double>& A);
-  Eigen::SparseMatrix<double> ordered_pressure_mass() const;
+  double sum_over_ranks(double value) const;
+  std::vector<int> pressure_order() const;
 
   std::string name_;
   LinearSolverOptions options_;
@@ -52,12 +59,13 @@ class PetscSolver final : public SparseDirectSolver {
   int ranks_ = 1;
   void* solver_ = nullptr;
   std::vector<char> is_pressure_, is_pressure_ordered_;
-  std::vector<int> locality_;  // set_locality_order's, or empty
-  // Old number → the plugin's (identity on one rank; order_for_ranks).
+  // Old number → the plugin's (identity on one rank; set_order), and this rank's rows
+  // in the plugin's numbering, [first_, last_), and of the pressure's, [p_first_, p_last_).
   Eigen::PermutationMatrix<Eigen::Dynamic> order_;
+  int first_ = 0, last_ = 0, p_first_ = 0, p_last_ = 0;
   bool symmetric_ = false;
   Eigen::SparseMatrix<double> pressure_mass_;
-  Eigen::VectorXd last_;  // the last solution, in order_: the next solve's first iterate
+  Eigen::VectorXd last_solution_;  // in order_: the next solve's first iterate
 };
 
 }  // namespace fsi

@@ -34,7 +34,11 @@ bool all_finite(const SparseMatrix& A) {
 }  // namespace
 
 void require_finite_matrix(const SparseMatrix& A, const std::string& who) {
-  if (!all_finite(A))
+  require_finite_matrix(all_finite(A), who);
+}
+
+void require_finite_matrix(bool finite, const std::string& who) {
+  if (!finite)
     throw SolverFailure(
         who +
         ": the matrix has a non-finite entry (NaN or inf), refused before its "
@@ -42,7 +46,11 @@ void require_finite_matrix(const SparseMatrix& A, const std::string& who) {
 }
 
 void require_finite_rhs(const Eigen::VectorXd& b, const std::string& who) {
-  if (!b.allFinite())
+  require_finite_rhs(b.allFinite(), who);
+}
+
+void require_finite_rhs(bool finite, const std::string& who) {
+  if (!finite)
     throw SolverFailure(who +
                         ": the right-hand side has a non-finite entry (NaN or inf), refused "
                         "before the solve (is a load or a prescribed velocity out of range?)");
@@ -68,7 +76,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
                             std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
   if (!same_pattern) throw std::logic_error(name() + ": the pattern differs from the analysed one");
   factorized_ = false;
-  require_finite_matrix(A, name());
+  require_finite_matrix(on_every_rank(all_finite(A)), name());
   factorize_values(A);
   factorized_ = true;
   ++factorizations_;
@@ -79,7 +87,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   if (!factorized_) throw std::logic_error(name() + ": solve() without a factorisation");
   if (rhs.size() + 1 != static_cast<Eigen::Index>(outer_.size()))
     throw std::invalid_argument(name() + ": right-hand side of the wrong size");
-  require_finite_rhs(rhs, name());
+  require_finite_rhs(on_every_rank(rhs.allFinite()), name());
   return solve_factorized(rhs);
 }
 

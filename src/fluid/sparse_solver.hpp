@@ -18,6 +18,9 @@ namespace fsi {
 // factorisation and each solve.
 void require_finite_matrix(const Eigen::SparseMatrix<double>& A, const std::string& who);
 void require_finite_rhs(const Eigen::VectorXd& b, const std::string& who);
+// The same, the check's outcome given (on several ranks: every rank's, on_every_rank).
+void require_finite_matrix(bool finite, const std::string& who);
+void require_finite_rhs(bool finite, const std::string& who);
 
 // What the last factorisation cost, as the library reports it (−1: not reported).
 // Flop counts follow each library's own convention; compare them within one.
@@ -70,7 +73,18 @@ class SparseDirectSolver {
   // graph); without it the solver orders the matrix's own graph, 9 times larger.
   virtual bool wants_locality_order() const { return false; }
   virtual void set_locality_order(std::vector<int> /*rank*/) {}
+  // After set_locality_order: per unknown, 1 for the rows this rank holds (empty: all).
+  // The caller then gives analyze(), factorize(), solve() and set_pressure_mass() only
+  // those rows of its matrices and right-hand sides, the others empty or zero
+  // (StokesAssembler::share_rows), and gets the whole solution back on every rank.
+  virtual std::vector<char> rows_here() const { return {}; }
   virtual void set_pressure_mass(Eigen::SparseMatrix<double> /*M*/) {}
+  // ‖v‖ of a vector of which each rank holds its rows_here() (the others zero): the
+  // squares summed over the ranks, so that every rank takes the same decisions.
+  virtual double norm_over_ranks(const Eigen::VectorXd& v) const { return v.norm(); }
+  // Whether `ok` holds on every rank: a failure on one rank's rows is every rank's,
+  // before a collective solve that the others would otherwise wait in for ever.
+  virtual bool on_every_rank(bool ok) const { return ok; }
   // The last solve's iterations (an iterative solver's, also when it failed; −1 for a
   // direct solver, or a solve refused before it began).
   int last_iterations() const { return last_iterations_; }

@@ -1,6 +1,8 @@
 #include "fluid/stokes_assembler.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "fem/integration.hpp"
 #include "fluid/sparse_solver.hpp"
@@ -134,7 +136,7 @@ void StokesAssembler::build_whole_pattern() {
     for (int component = 0; component < 3; ++component)  // rows in increasing full index
       for (int i : adjacent[j]) {
         const int r = free_index_[component * nv + i];
-        if (r >= 0) inner_index.push_back(r);
+        if (r >= 0 && holds(r)) inner_index.push_back(r);
       }
     outer_index[col + 1] = static_cast<int>(inner_index.size());
   }
@@ -143,19 +145,51 @@ void StokesAssembler::build_whole_pattern() {
   std::copy(outer_index.begin(), outer_index.end(), K_.outerIndexPtr());
   std::copy(inner_index.begin(), inner_index.end(), K_.innerIndexPtr());
   std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
-  slot_.assign(81 * static_cast<std::size_t>(nt), -1);
+  slot_.assign(81 * static_cast<std::size_t>(triangles_here()), -1);
   const int* outer = K_.outerIndexPtr();
   const int* inner = K_.innerIndexPtr();
-  for (int t = 0; t < nt; ++t)
+  for (int k = 0; k < triangles_here(); ++k) {
+    const int t = visited(k);
     for (int i = 0; i < 9; ++i)
       for (int j = 0; j < 9; ++j) {
         const int r = free_index_[fluid_dof(mesh_.triangles[t], i, nv)];
         const int c = free_index_[fluid_dof(mesh_.triangles[t], j, nv)];
-        if (r < 0 || c < 0) continue;
+        if (r < 0 || c < 0 || !holds(r)) continue;
         const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
-        slot_[81 * static_cast<std::size_t>(t) + 9 * i + j] = static_cast<int>(pos - inner);
+        slot_[81 * static_cast<std::size_t>(k) + 9 * i + j] = static_cast<int>(pos - inner);
       }
+  }
+}
 
+void StokesAssembler::share_rows(std::vector<char> here) {
+  if (!here.empty() && here.size() != free_.size())
+    throw std::invalid_argument("share_rows: " + std::to_string(here.size()) + " flags for " +
+                                std::to_string(free_.size()) + " unknowns");
+  row_here_ = std::move(here);
+  triangles_here_.clear();
+  here_index_.clear();
+  if (!row_here_.empty()) {
+    here_index_.assign(static_cast<std::size_t>(mesh_.num_triangles()), -1);
+    for (int t = 0; t < mesh_.num_triangles(); ++t) {
+      const std::array<int, 9> dof = element_dofs(t);
+      if (std::any_of(dof.begin(), dof.end(), [this](int r) { return r >= 0 && holds(r); })) {
+        here_index_[static_cast<std::size_t>(t)] = static_cast<int>(triangles_here_.size());
+        triangles_here_.push_back(t);
+      }
+    }
+  }
+  K_ = Eigen::SparseMatrix<double>();
+  slot_.clear();
+  assembled_ = false;
+}
+
+int StokesAssembler::triangles_here() const {
+  return row_here_.empty() ? mesh_.num_triangles() : static_cast<int>(triangles_here_.size());
+}
+
+const int* StokesAssembler::slots(int t) const {
+  const int k = here_index_.empty() ? t : here_index_[static_cast<std::size_t>(t)];
+  return &slot_[81 * static_cast<std::size_t>(k)];
 }
 
 void StokesAssembler::set_body_force(const VectorField& f) {
@@ -195,15 +229,15 @@ void StokesAssembler::add_element(int t, double kappa, double sign) {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
   const CondensedElement ce = condense(local(t, kappa), load(t));
-  const int* slots = &slot_[81 * static_cast<std::size_t>(t)];
+  const int* slot = slots(t);
   double* values = K_.valuePtr();
   for (int i = 0; i < 9; ++i) {
     const int r = free_index_[fluid_dof(tri, i, nv)];
-    if (r < 0) continue;
+    if (r < 0 || !holds(r)) continue;
     rhs_[r] += sign * ce.F[i];
     for (int j = 0; j < 9; ++j) {
-      if (slots[9 * i + j] >= 0)
-        values[slots[9 * i + j]] += sign * ce.K(i, j);
+      if (slot[9 * i + j] >= 0)
+        values[slot[9 * i + j]] += sign * ce.K(i, j);
       else  // prescribed column: lift to the right-hand side
         rhs_[r] -= sign * ce.K(i, j) * z_fixed_[fluid_dof(tri, j, nv)];
     }
@@ -214,7 +248,12 @@ void StokesAssembler::assemble_full(const Eigen::VectorXd& chi, double eps) {
   build_whole_pattern();
   std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
   rhs_ = traction_load_;
-  for (int t = 0; t < mesh_.num_triangles(); ++t) add_element(t, chi[t] / eps, 1.0);
+  for (Eigen::Index r = 0; r < rhs_.size(); ++r)
+    if (!holds(static_cast<int>(r))) rhs_[r] = 0;
+  for (int k = 0; k < triangles_here(); ++k) {
+    const int t = visited(k);
+    add_element(t, chi[t] / eps, 1.0);
+  }
   updates_since_full_ = 0;
   assembled_chi_ = chi;
   assembled_eps_ = eps;
@@ -232,6 +271,7 @@ void StokesAssembler::assemble(const Eigen::VectorXd& chi, double eps) {
     if (chi[t] != assembled_chi_[t]) changed.push_back(t);
   if (static_cast<int>(changed.size()) > mesh_.num_triangles() / 10) return assemble_full(chi, eps);
   for (int t : changed) {
+    if (!here_index_.empty() && here_index_[static_cast<std::size_t>(t)] < 0) continue;  // no row of it here
     add_element(t, assembled_chi_[t] / eps, -1.0);
     add_element(t, chi[t] / eps, 1.0);
   }

@@ -99,6 +99,13 @@ class StokesAssembler {
   // The next assemble() assembles every triangle (a new run: its numbers must not
   // depend on the round-off of the last run's updates).
   void forget_assembly() { assembled_ = false; }
+  // From now on K and rhs hold only the rows of the unknowns k with here[k] (one MPI
+  // rank's share, SparseDirectSolver::rows_here), the other rows empty and zero: only
+  // the triangles that touch one of them are visited, and K stores their pattern
+  // alone. Empty: all the rows. std::invalid_argument unless one flag per unknown.
+  void share_rows(std::vector<char> here);
+  // The triangles an assembly visits: all, or those of this rank's share.
+  int triangles_here() const;
   const Eigen::SparseMatrix<double>& matrix() const { return K_; }
   const Eigen::VectorXd& rhs() const { return rhs_; }
 
@@ -130,6 +137,11 @@ class StokesAssembler {
                                            std::vector<bool>& fixed);
   Eigen::VectorXd traction_load(const FluidBoundaryConditions& bc) const;
   void build_whole_pattern();
+  bool holds(int row) const { return row_here_.empty() || row_here_[static_cast<std::size_t>(row)]; }
+  // The k-th triangle an assembly visits (k < triangles_here()).
+  int visited(int k) const { return triangles_here_.empty() ? k : triangles_here_[static_cast<std::size_t>(k)]; }
+  // Triangle t's 81 positions in K_.valuePtr() (−1: a prescribed column or a row not held).
+  const int* slots(int t) const;
   void add_element(int t, double kappa, double sign);
   // Triangle t's local system with the penalty κ: the Stokes terms and the added ones;
   // its load: the body force's and the added terms'.
@@ -146,7 +158,11 @@ class StokesAssembler {
   Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)
   std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed
   std::vector<int> free_;              // reduced index → full dof
-  std::vector<int> slot_;              // 81 per triangle: position in K_.valuePtr(), −1 if not free-free
+  std::vector<int> slot_;              // 81 per triangle here: position in K_.valuePtr(), −1 if not free-free
+  // share_rows's: the rows held (empty: all), the triangles visited (all if empty),
+  // and triangle t's place among them (its slots' block; −1: not visited).
+  std::vector<char> row_here_;
+  std::vector<int> triangles_here_, here_index_;
   long nonzeros_ = 0;
   std::vector<int> dof_rank_;
   std::future<std::vector<int>> vertex_order_;  // METIS's order of the vertices, until dof_rank()

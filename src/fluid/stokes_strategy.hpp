@@ -97,13 +97,19 @@ class WholeSolve final : public StokesSolveStrategy {
   std::string name() const override { return solver_->name(); }
   bool needs_symmetry() const override { return solver_->needs_symmetry(); }
   void new_run() override { assembler_.forget_assembly(); }
+  // ‖v‖ of a vector over the assembler's rows (on several ranks each holds some: the
+  // norm over all of them, the same on every rank).
+  double norm(const Eigen::VectorXd& v) const { return solver_->norm_over_ranks(v); }
+  // What the first solve does before its assembly (whole_solve.cpp), for a caller that
+  // assembles before it (NewtonSolve's residual).
+  void prepare();
 
  private:
   StokesAssembler& assembler_;
   std::unique_ptr<SparseDirectSolver> solver_;
   FluidTiming& timing_;
   FluidSolution& out_;
-  bool analysed_ = false;
+  bool prepared_ = false, analysed_ = false;
 };
 
 class SubstructuredSolve final : public StokesSolveStrategy {

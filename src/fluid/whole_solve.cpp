@@ -8,9 +8,22 @@ WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, Fl
                        const LinearSolverOptions& options)
     : assembler_(assembler), solver_(make_sparse_solver(solver, options)), timing_(timing), out_(out) {}
 
+// Before the first assembly: the solver told what the unknowns are and, if it
+// distributes the rows over MPI ranks, given an order that keeps neighbours together;
+// the assembler then assembles only this rank's rows.
+void WholeSolve::prepare() {
+  if (prepared_) return;
+  prepared_ = true;
+  solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
+  if (!solver_->wants_locality_order()) return;
+  solver_->set_locality_order(assembler_.dof_rank());
+  assembler_.share_rows(solver_->rows_here());
+}
+
 // Assembles K (incrementally), factorises all of it (one symbolic analysis for the
 // run: the pattern never changes), solves.
 void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles) {
+  prepare();
   {
     const Stopwatch clock;
     assembler_.assemble(chi, eps);
@@ -21,8 +34,6 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
   {
     const Stopwatch clock;
     if (!analysed_) {
-      solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
-      if (solver_->wants_locality_order()) solver_->set_locality_order(assembler_.dof_rank());
       solver_->analyze(K);
       analysed_ = true;
       timing_.analysis += clock.elapsed();
@@ -42,7 +53,7 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
   // A nearly singular matrix can factorise without a zero pivot and give garbage:
   // one product with K (~1% of a factorisation) catches it. The direct solvers reach
   // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
-  const double residual = (K * x - rhs).norm(), scale = rhs.norm();
+  const double residual = norm(K * x - rhs), scale = norm(rhs);
   if (!(residual <= solver_->residual_tolerance() * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
                         ": relative residual " + std::to_string(residual / scale) + " after the direct solve");

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -15,6 +16,7 @@
 #include "common/errors.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "fluid/petsc_solver.hpp"
+#include "fluid/stokes_strategy.hpp"
 #include "support/norms.hpp"
 #include "support/stokes_mms.hpp"
 #include "support/structured_mesh.hpp"
@@ -36,12 +38,15 @@ struct Cavity {
     }
     return c;
   }
-  std::unique_ptr<PenalisedStokes> stokes(double eps, const std::string& solver = kDefaultSparseSolver) const {
+  FluidBoundaryConditions bc() const {
     FluidBoundaryConditions bc;
     for (const char* name : {"left", "bottom", "top"}) bc.dirichlet_labels.push_back(mesh.label(name));
     bc.g = [](const Point& x) { return x.y() > 1 - 1e-12 ? Point(x.x() * (1 - x.x()), 0) : Point(0, 0); };
-    auto s = std::make_unique<PenalisedStokes>(mesh, 0.01, eps, [](const Point&) { return Point(0, -9.81); }, bc,
-                                               solver);
+    return bc;
+  }
+  static Point gravity(const Point&) { return Point(0, -9.81); }
+  std::unique_ptr<PenalisedStokes> stokes(double eps, const std::string& solver = kDefaultSparseSolver) const {
+    auto s = std::make_unique<PenalisedStokes>(mesh, 0.01, eps, gravity, bc(), solver);
     s->set_chi(chi());
     return s;
   }
@@ -82,6 +87,34 @@ TEST(PetscSolver, MumpsThroughPetscEqualsMumpsFromEps1e2To1e7) {
     expect_close(petsc->solve(), expected, 1e-10, "petsc-mumps, ε = " + std::to_string(eps));
     EXPECT_EQ(petsc->solver_name(), "petsc-mumps");
     EXPECT_TRUE(petsc->timing().linear_iterations.empty());  // a direct solver
+  }
+}
+
+// Each rank assembles only the rows PETSc gives it (StokesAssembler::share_rows): on
+// two ranks (ctest Mpi.PetscSolversOnTwoRanks) a rank's K holds fewer entries than
+// the whole, the ranks' entries and right-hand sides add up to the whole system's,
+// and the solution is the direct path's; on one rank it holds them all.
+TEST(PetscSolver, EachRankAssemblesOnlyItsOwnRows) {
+  if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
+  const Cavity cavity;
+  const double eps = 1e-5;
+  const FluidSolution expected = cavity.stokes(eps)->solve();
+  StokesAssembler whole_system(cavity.mesh, 0.01, Cavity::gravity, cavity.bc());
+  whole_system.assemble(cavity.chi(), eps);
+  for (const std::string solver : {"petsc-mumps", "petsc-iterative"}) {
+    StokesAssembler assembler(cavity.mesh, 0.01, Cavity::gravity, cavity.bc());
+    FluidTiming timing;
+    FluidSolution out;
+    WholeSolve whole(assembler, solver, timing, out, small(1e-11, 500));
+    whole.solve(cavity.chi(), eps, nullptr);
+    // Σ over the ranks of a number: the square of the norm of its square root.
+    const auto summed = [&whole](double x) { return std::pow(whole.norm(Eigen::VectorXd::Constant(1, std::sqrt(x))), 2); };
+    const double ranks = summed(1.0), held = static_cast<double>(assembler.matrix().nonZeros());
+    EXPECT_NEAR(summed(held), static_cast<double>(whole_system.matrix().nonZeros()), 0.5) << solver;
+    if (ranks > 1.5) EXPECT_LT(held, 0.75 * static_cast<double>(whole_system.matrix().nonZeros())) << solver;
+    else EXPECT_EQ(held, static_cast<double>(whole_system.matrix().nonZeros())) << solver;
+    EXPECT_NEAR(whole.norm(assembler.rhs()), whole_system.rhs().norm(), 1e-12 * whole_system.rhs().norm()) << solver;
+    expect_close(out, expected, solver == "petsc-mumps" ? 1e-10 : 1e-7, solver);
   }
 }
 

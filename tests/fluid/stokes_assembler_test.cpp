@@ -1,0 +1,106 @@
+// StokesAssembler::share_rows (issue 32: each MPI rank assembles its own rows): a
+// share's K and rhs are the whole system's rows it holds, empty and zero elsewhere,
+// after a full assembly and after an update where χ changed; two complementary shares
+// add up to the whole system; a share visits only the triangles that touch its rows.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "fluid/stokes_assembler.hpp"
+#include "support/structured_mesh.hpp"
+
+namespace fsi::stokes_assembler_test {
+namespace {
+
+struct Channel {
+  Channel() : mesh(testing::structured_rectangle(2.0, 1.0, 12, 6)) {
+    for (const char* name : {"left", "bottom", "top"}) bc.dirichlet_labels.push_back(mesh.label(name));
+    bc.g = [](const Point& x) { return Point(x.y() * (1 - x.y()), 0); };
+    bc.tractions.push_back({mesh.label("right"), [](const Point&) { return Point(-0.5, 0.1); }});
+  }
+  StokesAssembler assembler() const {
+    return StokesAssembler(mesh, 0.01, [](const Point& x) { return Point(x.y(), -9.81); }, bc);
+  }
+  // χ = 1 on the triangles whose first vertex lies left of x.
+  Eigen::VectorXd chi(double x) const {
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(mesh.num_triangles());
+    for (int t = 0; t < mesh.num_triangles(); ++t) c[t] = mesh.vertices[mesh.triangles[t][0]].x() < x ? 1.0 : 0.0;
+    return c;
+  }
+  Mesh mesh;
+  FluidBoundaryConditions bc;
+};
+
+// K with only the rows r with here[r] kept.
+Eigen::SparseMatrix<double> rows_of(const Eigen::SparseMatrix<double>& K, const std::vector<char>& here) {
+  Eigen::SparseMatrix<double> out = K;
+  out.prune([&here](Eigen::Index row, Eigen::Index, double) { return here[static_cast<std::size_t>(row)] != 0; });
+  return out;
+}
+
+void expect_rows(const StokesAssembler& share, const StokesAssembler& whole, const std::vector<char>& here,
+                 const char* when) {
+  const Eigen::SparseMatrix<double> expected = rows_of(whole.matrix(), here);
+  EXPECT_EQ(share.matrix().nonZeros(), expected.nonZeros()) << when;
+  EXPECT_LE((share.matrix() - expected).norm(), 1e-12 * whole.matrix().norm()) << when;
+  for (std::size_t r = 0; r < here.size(); ++r) {
+    const double want = here[r] ? whole.rhs()[static_cast<Eigen::Index>(r)] : 0.0;
+    ASSERT_NEAR(share.rhs()[static_cast<Eigen::Index>(r)], want, 1e-12 * whole.rhs().norm()) << when << ", row " << r;
+  }
+}
+
+TEST(StokesAssembler, SomeRowsAreTheWholeMatrixsRowsAndTwoSharesAddUpToIt) {
+  const Channel channel;
+  StokesAssembler whole = channel.assembler();
+  const int n = whole.unknowns();
+  std::vector<char> first(static_cast<std::size_t>(n)), second(first.size());
+  for (int r = 0; r < n; ++r) first[static_cast<std::size_t>(r)] = r % 3 != 1, second[static_cast<std::size_t>(r)] = r % 3 == 1;
+  StokesAssembler a = channel.assembler(), b = channel.assembler();
+  a.share_rows(first);
+  b.share_rows(second);
+  const double eps = 1e-4;
+  for (const double x : {0.5, 0.7}) {  // a full assembly, then an update where χ changed
+    whole.assemble(channel.chi(x), eps);
+    a.assemble(channel.chi(x), eps);
+    b.assemble(channel.chi(x), eps);
+    const char* when = x == 0.5 ? "full assembly" : "update";
+    expect_rows(a, whole, first, when);
+    expect_rows(b, whole, second, when);
+    EXPECT_LE((a.matrix() + b.matrix() - whole.matrix()).norm(), 1e-12 * whole.matrix().norm()) << when;
+    EXPECT_LE((a.rhs() + b.rhs() - whole.rhs()).norm(), 1e-12 * whole.rhs().norm()) << when;
+  }
+}
+
+TEST(StokesAssembler, AShareVisitsOnlyTheTrianglesTouchingItsRows) {
+  const Channel channel;
+  const Mesh& mesh = channel.mesh;
+  StokesAssembler a = channel.assembler();
+  EXPECT_EQ(a.triangles_here(), mesh.num_triangles());
+  // The unknowns of the vertices left of x = 0.5 (each has its pressure's at least):
+  // the triangles with such a vertex are visited, the others not.
+  const auto left = [&mesh](int v) { return mesh.vertices[v].x() < 0.5; };
+  std::vector<char> here(static_cast<std::size_t>(a.unknowns()), 0);
+  int touching = 0;
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    touching += left(tri[0]) || left(tri[1]) || left(tri[2]);
+    const std::array<int, 9> dof = a.element_dofs(t);
+    for (std::size_t k = 0; k < 9; ++k)
+      if (dof[k] >= 0 && left(tri[k % 3])) here[static_cast<std::size_t>(dof[k])] = 1;
+  }
+  a.share_rows(here);
+  EXPECT_EQ(a.triangles_here(), touching);
+  EXPECT_LT(touching, mesh.num_triangles());
+  a.share_rows({});  // all the rows again
+  EXPECT_EQ(a.triangles_here(), mesh.num_triangles());
+}
+
+TEST(StokesAssembler, AShareMustHaveOneFlagPerUnknown) {
+  const Channel channel;
+  StokesAssembler a = channel.assembler();
+  EXPECT_THROW(a.share_rows(std::vector<char>(static_cast<std::size_t>(a.unknowns()) + 1, 1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fsi::stokes_assembler_test
