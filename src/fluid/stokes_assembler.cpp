@@ -6,6 +6,7 @@
 
 #include "fem/integration.hpp"
 #include "fluid/sparse_solver.hpp"
+#include "mesh/hilbert_order.hpp"
 
 namespace fsi {
 namespace {
@@ -124,7 +125,7 @@ void StokesAssembler::set_boundary_data(const FluidBoundaryConditions& bc) {
 void StokesAssembler::build_whole_pattern() {
   if (K_.rows() == static_cast<Eigen::Index>(free_.size()) && !slot_.empty()) return;
   const Mesh& mesh = mesh_;
-  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
+  const int nv = mesh.num_vertices();
   // Sparsity pattern of the free–free block, built column by column from vertex
   // adjacency (two dofs couple iff their vertices share a triangle): no triplet list,
   // which at hF = 0.0025 would hold 12 million entries.
@@ -364,18 +365,30 @@ void StokesAssembler::order_in_background() {
 // every far-field factorisation of the run.
 const std::vector<int>& StokesAssembler::dof_rank() {
   if (!dof_rank_.empty()) return dof_rank_;
-  const int nv = mesh_.num_vertices();
   // A failed order (get() rethrows METIS's failure) leaves the future invalid: a
   // second request computes it here.
-  const std::vector<int> perm =
-      vertex_order_.valid() ? vertex_order_.get() : vertex_nested_dissection(mesh_);
-  dof_rank_.assign(free_.size(), 0);
+  dof_rank_ = rank_of_unknowns(vertex_order_.valid() ? vertex_order_.get() : vertex_nested_dissection(mesh_));
+  return dof_rank_;
+}
+
+// On several MPI ranks, each rank's block of the dof_rank() order would be a part of a
+// nested dissection, its separators gathered last (the last rank's block), and METIS
+// on the vertex graph takes seconds at a million unknowns. A Hilbert curve gives
+// compact blocks in O(n log n): at 1.4 million unknowns on two ranks the PETSc
+// analysis took 0.17 s instead of 2.8 s, for as many GMRES iterations (93; 111
+// instead of 120 at 2.85 million; measured in the previous try of this change,
+// bench/petsc_study.py, docs/performance.md).
+std::vector<int> StokesAssembler::curve_rank() const { return rank_of_unknowns(hilbert_order(mesh_.vertices)); }
+
+std::vector<int> StokesAssembler::rank_of_unknowns(const std::vector<int>& vertices) const {
+  const int nv = mesh_.num_vertices();
+  std::vector<int> rank(free_.size(), 0);
   for (int position = 0; position < nv; ++position)
     for (int c = 0; c < 3; ++c) {
-      const int r = free_index_[c * nv + perm[position]];
-      if (r >= 0) dof_rank_[r] = 3 * position + c;
+      const int r = free_index_[c * nv + vertices[static_cast<std::size_t>(position)]];
+      if (r >= 0) rank[static_cast<std::size_t>(r)] = 3 * position + c;
     }
-  return dof_rank_;
+  return rank;
 }
 
 std::vector<char> StokesAssembler::pressure_unknowns() const {

@@ -131,8 +131,15 @@ class StokesAssembler {
   // it on a second thread; dof_rank() waits for it (or computes it).
   void order_in_background();
   const std::vector<int>& dof_rank();
+  // An order of the unknowns along a Hilbert curve through the vertices (each vertex's
+  // v1, v2, p together; mesh/hilbert_order.hpp): contiguous blocks of it are compact
+  // parts of the domain, one per MPI rank (SparseDirectSolver::set_locality_order).
+  std::vector<int> curve_rank() const;
 
  private:
+  // Per unknown, its place when the vertices come in the order `vertices` (each
+  // vertex's v1, v2, p in turn).
+  std::vector<int> rank_of_unknowns(const std::vector<int>& vertices) const;
   static Eigen::VectorXd prescribed_values(const Mesh& mesh, const FluidBoundaryConditions& bc,
                                            std::vector<bool>& fixed);
   Eigen::VectorXd traction_load(const FluidBoundaryConditions& bc) const;

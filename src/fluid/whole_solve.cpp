@@ -16,7 +16,7 @@ void WholeSolve::prepare() {
   prepared_ = true;
   solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
   if (!solver_->wants_locality_order()) return;
-  solver_->set_locality_order(assembler_.dof_rank());
+  solver_->set_locality_order(assembler_.curve_rank());
   assembler_.share_rows(solver_->rows_here());
 }
 
