@@ -173,12 +173,16 @@ int run_subcommand(const CliArgs& a, const CLI::App& sweep, const CLI::App& conv
 // fluid's distributed solves (SPEC §13); the ranks but 0 print nothing and write into
 // a directory of their own, removed at the end, so that the outputs are rank 0's
 // alone. Their computations are the same as rank 0's, so they fail where it fails.
-int run_on_other_rank(CliArgs a, const CLI::App& sweep, const CLI::App& converge) {
+int run_on_other_rank(CliArgs a, const CLI::App& sweep, const CLI::App& converge, std::ostream& err) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path own = fs::temp_directory_path(ec) / ("fsicontact-rank-" + std::to_string(launched_rank()) + "-" +
                                                      std::to_string(::getpid()));
-  if (ec || !fs::create_directories(own, ec)) return 1;  // mpirun then ends every rank
+  if (ec || !fs::create_directories(own, ec)) {  // mpirun then ends every rank
+    err << "fsicontact: failed: rank " << launched_rank() << " cannot create its private directory " << own
+        << " for the outputs it discards: " << ec.message() << " (is TMPDIR writable?)\n";
+    return 1;
+  }
   a.out_dir = own.string();
   a.quiet = true;
   std::ostringstream ignored;
@@ -215,7 +219,7 @@ int fsicontact_main(int argc, const char* const* argv, std::ostream& out, std::o
     return 2;
   }
   install_interrupt_handler();
-  if (ranks > 1 && launched_rank() > 0) return run_on_other_rank(args, *sweep, *converge);
+  if (ranks > 1 && launched_rank() > 0) return run_on_other_rank(args, *sweep, *converge, err);
   return run_subcommand(args, *sweep, *converge, Streams{out, err});
 }
 

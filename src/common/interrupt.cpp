@@ -14,6 +14,7 @@ volatile std::sig_atomic_t g_signal = 0;
 // memory that stays valid; g_temporary_set guards it.
 char g_temporary[4096];
 volatile std::sig_atomic_t g_temporary_set = 0;
+InterruptAgreement g_agree = nullptr;
 
 extern "C" void on_stop_signal(int sig) {
   if (g_signal == 0) {
@@ -36,8 +37,25 @@ void install_interrupt_handler() {
 ScopedInterruptHandler::ScopedInterruptHandler() : previous_(std::signal(SIGINT, on_stop_signal)) {}
 ScopedInterruptHandler::~ScopedInterruptHandler() { std::signal(SIGINT, previous_ == SIG_ERR ? SIG_DFL : previous_); }
 
-bool interrupt_requested() { return g_signal != 0; }
+bool interrupt_requested() {
+  if (g_agree) {
+    const int agreed = g_agree(g_signal);
+    if (agreed != 0 && g_signal == 0) g_signal = agreed;  // another rank's signal is this one's
+  }
+  return g_signal != 0;
+}
+
+void agree_on_interrupts(InterruptAgreement agree) { g_agree = agree; }
 int interrupt_signal() { return g_signal; }
+
+const char* interrupt_signal_name() {
+  switch (g_signal) {
+    case SIGINT: return "Ctrl-C";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return "a signal";
+  }
+}
 void request_interrupt(int signal) { g_signal = signal; }
 void clear_interrupt() { g_signal = 0; }
 int interrupted_exit_status() { return 128 + (g_signal ? g_signal : SIGINT); }

@@ -10,8 +10,19 @@ namespace fsi {
 // default action. SIGPIPE and SIGXFSZ are ignored, so that a closed pipe or a file
 // size limit becomes a write error with its errno instead of a silent death.
 void install_interrupt_handler();
+// Whether a stop was asked. On several MPI ranks, once agree_on_interrupts() is set,
+// every call asks every rank (a collective: the polls sit at the boundaries of passes,
+// steps, sweep rows and converge levels, which every rank reaches alike), so that a
+// signal sent to one rank stops them all at the same poll, instead of leaving the
+// others waiting for it in the next distributed solve.
 bool interrupt_requested();
-int interrupt_signal();   // the signal that asked to stop (0: none)
+int interrupt_signal();   // the signal that asked to stop (0: none; the agreed one)
+// What a message calls it: "Ctrl-C", "SIGTERM", "SIGHUP", or "a signal".
+const char* interrupt_signal_name();
+// `agree(local)`: the largest of every rank's local signal number (0: none), on every
+// rank (the PETSc plugin's MPI_Allreduce). Null: this process alone (the default).
+using InterruptAgreement = int (*)(int local_signal);
+void agree_on_interrupts(InterruptAgreement agree);
 void request_interrupt(int signal = 2);  // as if the signal arrived (tests)
 void clear_interrupt();
 

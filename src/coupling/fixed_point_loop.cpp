@@ -68,7 +68,9 @@ void FixedPointLoop::iterate(CouplingResult& result, const Eigen::VectorXd& u0) 
     }
     if (interrupt_requested()) {
       result.interrupted = true;
-      if (progress) progress("[coupling] interrupted (Ctrl-C): stopping after iteration " + std::to_string(k));
+      if (progress)
+        progress(std::string("[coupling] interrupted (") + interrupt_signal_name() + "): stopping after iteration " +
+                 std::to_string(k));
       return;
     }
     warm = &result.structure;

@@ -90,6 +90,12 @@ std::string sum_over_ranks(double* values, int count) {
   return "";
 }
 
+int largest_over_ranks(int local) {
+  int largest = local;
+  if (MPI_Allreduce(&local, &largest, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD) != MPI_SUCCESS) return 15;
+  return largest;
+}
+
 std::string set_layout(Solver& s, PetscInt n) {
   if (s.n == n) return "";
   if (s.n >= 0)
@@ -382,9 +388,9 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   return "";
 }
 
-const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, row_block,
-                             sum_over_ranks,      create,     set_operator,
-                             set_pressure_mass,   solve,      destroy};
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, row_block,         sum_over_ranks,
+                             largest_over_ranks,  create,     set_operator,      set_pressure_mass,
+                             solve,               destroy};
 
 }  // namespace
 }  // namespace fsi

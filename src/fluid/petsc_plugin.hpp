@@ -57,6 +57,9 @@ struct PetscPlugin {
   // values[0..count) summed over the ranks, in place on every rank (MPI_Allreduce);
   // "" or the error.
   std::string (*sum_over_ranks)(double* values, int count);
+  // The largest of every rank's `local` (a signal number, 0 for none), on every rank:
+  // common/interrupt's agreement (agree_on_interrupts). An MPI error counts as SIGTERM.
+  int (*largest_over_ranks)(int local);
   // A solver (null and `error` set if it cannot be made).
   void* (*create)(const PetscSolverConfig& config, std::string& error);
   // The operator: its first call fixes the pattern; every call refactorises

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/interrupt.hpp"
 #include "common/plugin_loader.hpp"
 #include "fluid/petsc_plugin.hpp"
 
@@ -42,6 +43,12 @@ Started petsc_started() {
     if (const std::string error = plugin->initialise(rank, ranks); !error.empty())
       throw SolverFailure("cannot initialise PETSc: " + error);
     started = {plugin, ranks};
+    if (ranks > 1) {
+      // A stop asked of one rank is every rank's (common/interrupt.hpp); no longer
+      // once MPI is finalised (atexit: this handler, registered after PETSc's, runs first).
+      agree_on_interrupts(plugin->largest_over_ranks);
+      std::atexit([] { agree_on_interrupts(nullptr); });
+    }
   });
   return started;
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -14,6 +15,8 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
+#include "common/launch.hpp"
 #include "fluid/penalised_stokes.hpp"
 #include "fluid/petsc_solver.hpp"
 #include "fluid/stokes_strategy.hpp"
@@ -243,6 +246,19 @@ TEST(PetscSolver, ManufacturedStokesKeepsTheMiniElementsRates) {
       EXPECT_GE(testing::rate(e[k].p_l2, e[k + 1].p_l2, h, h / 2), 0.9) << solver;
     }
   }
+}
+
+// A stop asked of one rank is every rank's (common/interrupt.hpp agree_on_interrupts):
+// on two ranks (ctest Mpi.PetscSolversOnTwoRanks) only the last rank is asked, and
+// every rank's poll says so, with that rank's signal; once cleared, no poll does.
+TEST(PetscSolver, AStopAskedOfOneRankIsEveryRanks) {
+  if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
+  const PetscSolver solver("petsc-mumps", small(1e-10, 10));  // PETSc started: the agreement too
+  if (launched_rank() == launched_ranks() - 1) request_interrupt(SIGTERM);
+  EXPECT_TRUE(interrupt_requested());
+  EXPECT_EQ(interrupt_signal(), SIGTERM);
+  clear_interrupt();
+  EXPECT_FALSE(interrupt_requested());
 }
 
 TEST(PetscSolver, WithoutThePluginItIsASolverFailureNamingThePackage) {
