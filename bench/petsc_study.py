@@ -6,12 +6,14 @@ One fluid solve of the §7.2 case around the structure at rest (coupling.max_ite
 the solver) for each fluid size h, penalty ε, fluid.linear_solver and number of MPI
 ranks; prints a markdown table of wall time, the fluid's factorisation-and-solve time
 (summary.json's fluid.factorization_s + solve_s: the preconditioner's set-up and GMRES
-for "petsc-iterative"), peak memory (the largest process's: a rank's) and, for "petsc-iterative",
-the GMRES iterations.
+for "petsc-iterative"), the fluid's assembly time, peak memory (the largest process's:
+a rank's) and, for "petsc-iterative", the GMRES iterations. With --rounds R the whole
+table is run R times, one round after the other (interleaved): this machine's timings
+drift by tens of per cent within a session, so a ratio is read within a round.
 
     bench/petsc_study.py [--program build/app/fsicontact] [--h 0.02 0.01 0.005]
                          [--eps 1e-3 1e-5 1e-7] [--solvers mumps petsc-iterative]
-                         [--ranks 1 2]
+                         [--ranks 1 2] [--rounds 1]
 """
 import argparse
 import json
@@ -34,8 +36,22 @@ def run(program, h, eps, solver, ranks, out):
     f = s.get("fluid", {})
     its = f.get("linear_iterations", [])
     return {"wall": float(wall), "mb": int(kb) / 1024, "unknowns": f.get("unknowns"),
-            "fluid": f.get("factorization_s", 0) + f.get("solve_s", 0),
+            "fluid": f.get("factorization_s", 0) + f.get("solve_s", 0), "assembly": f.get("assembly_s", 0),
             "iterations": its[0] if its else None, "status": s.get("status")}
+
+
+def table(o, tmp, round):
+    for h in o.h:
+        for eps in o.eps:
+            for solver in o.solvers:
+                for ranks in o.ranks:
+                    if ranks > 1 and solver == "mumps":
+                        continue  # one rank only
+                    out = os.path.join(tmp, re.sub(r"\W", "_", f"{h}-{eps}-{solver}-{ranks}"))
+                    r = run(o.program, h, eps, solver, ranks, out)
+                    its = "" if r["iterations"] is None else str(r["iterations"])
+                    print(f"| {round} | {h} | {eps} | {r['unknowns']} | {solver} | {ranks} | {r['wall']:.2f} s | "
+                          f"{r['fluid']:.2f} s | {r['assembly']:.2f} s | {r['mb']:.0f} MB | {its} |", flush=True)
 
 
 def main():
@@ -45,21 +61,13 @@ def main():
     a.add_argument("--eps", nargs="+", default=["1e-3", "1e-5", "1e-7"])
     a.add_argument("--solvers", nargs="+", default=["mumps", "petsc-iterative"])
     a.add_argument("--ranks", nargs="+", type=int, default=[1])
+    a.add_argument("--rounds", type=int, default=1)
     o = a.parse_args()
-    print("| h | ε | unknowns | solver | ranks | wall | fluid solve | peak memory | GMRES iterations |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| round | h | ε | unknowns | solver | ranks | wall | fluid solve | assembly | peak memory | GMRES iterations |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
-        for h in o.h:
-            for eps in o.eps:
-                for solver in o.solvers:
-                    for ranks in o.ranks:
-                        if ranks > 1 and solver == "mumps":
-                            continue  # one rank only
-                        out = os.path.join(tmp, re.sub(r"\W", "_", f"{h}-{eps}-{solver}-{ranks}"))
-                        r = run(o.program, h, eps, solver, ranks, out)
-                        its = "" if r["iterations"] is None else str(r["iterations"])
-                        print(f"| {h} | {eps} | {r['unknowns']} | {solver} | {ranks} | {r['wall']:.2f} s | "
-                              f"{r['fluid']:.2f} s | {r['mb']:.0f} MB | {its} |", flush=True)
+        for round in range(1, o.rounds + 1):
+            table(o, tmp, round)
 
 
 if __name__ == "__main__":

@@ -5,42 +5,8 @@
 #include <string>
 
 #include "fem/integration.hpp"
-#include "fluid/sparse_solver.hpp"
-#include "mesh/hilbert_order.hpp"
 
 namespace fsi {
-namespace {
-
-// Two vertices are adjacent iff they share a triangle (a vertex is its own neighbour).
-std::vector<std::vector<int>> vertex_adjacency(const Mesh& mesh) {
-  std::vector<std::vector<int>> adjacent(mesh.num_vertices());
-  for (const auto& tri : mesh.triangles)
-    for (int a : tri)
-      for (int b : tri) adjacent[a].push_back(b);
-  for (auto& list : adjacent) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-  }
-  return adjacent;
-}
-
-// METIS nested dissection of the vertex graph: perm[k] = the k-th vertex.
-std::vector<int> vertex_nested_dissection(const Mesh& mesh) {
-  const int nv = mesh.num_vertices();
-  const std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh);
-  Eigen::SparseMatrix<double> graph(nv, nv);
-  std::size_t nnz = 0;
-  for (const auto& list : adjacent) nnz += list.size();
-  graph.resizeNonZeros(static_cast<Eigen::Index>(nnz));
-  graph.outerIndexPtr()[0] = 0;
-  for (int v = 0, k = 0; v < nv; ++v) {
-    for (int w : adjacent[v]) graph.innerIndexPtr()[k] = w, graph.valuePtr()[k++] = 1.0;
-    graph.outerIndexPtr()[v + 1] = graph.outerIndexPtr()[v] + static_cast<int>(adjacent[v].size());
-  }
-  return metis_ordering(graph);
-}
-
-}  // namespace
 
 StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField& f,
                                  const FluidBoundaryConditions& bc, bool order_now)
@@ -64,7 +30,7 @@ StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField&
   // The number of nonzeros of the whole K (its pattern is built only when the whole
   // matrix is assembled: the substructured solve never needs it).
   {
-    std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh);
+    std::vector<std::vector<int>> adjacent = vertex_neighbours(mesh);
     for (int col = 0; col < static_cast<int>(free_.size()); ++col)
       for (int component = 0; component < 3; ++component)
         for (int i : adjacent[free_[col] % nv])
@@ -130,7 +96,7 @@ void StokesAssembler::build_whole_pattern() {
   // adjacency (two dofs couple iff their vertices share a triangle): no triplet list,
   // which at hF = 0.0025 would hold 12 million entries.
   const int n = static_cast<int>(free_.size());
-  const std::vector<std::vector<int>> adjacent = vertex_adjacency(mesh);
+  const std::vector<std::vector<int>> adjacent = vertex_neighbours(mesh);
   std::vector<int> outer_index(n + 1, 0), inner_index;
   for (int col = 0; col < n; ++col) {
     const int j = free_[col] % nv;
@@ -344,51 +310,6 @@ void StokesAssembler::recover_bubble(int t, double kappa, FluidSolution& out) co
   Vector9d local;
   for (int k = 0; k < 3; ++k) local[k] = out.v1[tri[k]], local[3 + k] = out.v2[tri[k]], local[6 + k] = out.p[tri[k]];
   out.bubble.col(t) = bb.A_bb_inv * (load(t).F_b - bb.E * local);
-}
-
-// The order is needed only by the first far-field factorisation, after the solver's
-// set-up, the point locator, the first χ and the far field's assembly: computed
-// meanwhile on the second core (METIS on the vertex graph takes 20–25 ms at
-// hF = 0.01, 5–7 % of Table 1's row 13). Where no thread can be started, it is
-// computed when first asked for.
-void StokesAssembler::order_in_background() {
-  if (!dof_rank_.empty() || vertex_order_.valid()) return;
-  const Mesh& mesh = mesh_;
-  vertex_order_ = std::async(std::launch::async | std::launch::deferred,
-                             [&mesh] { return vertex_nested_dissection(mesh); });
-}
-
-// A fill-reducing order of the unknowns, computed once per mesh: METIS nested
-// dissection of the vertex graph, each vertex's v1, v2, p kept together. On the
-// vertex graph (a third of the nodes, a ninth of the edges of the dof graph) METIS
-// is several times faster than on K, for a fill within a few per cent; it serves
-// every far-field factorisation of the run.
-const std::vector<int>& StokesAssembler::dof_rank() {
-  if (!dof_rank_.empty()) return dof_rank_;
-  // A failed order (get() rethrows METIS's failure) leaves the future invalid: a
-  // second request computes it here.
-  dof_rank_ = rank_of_unknowns(vertex_order_.valid() ? vertex_order_.get() : vertex_nested_dissection(mesh_));
-  return dof_rank_;
-}
-
-// On several MPI ranks, each rank's block of the dof_rank() order would be a part of a
-// nested dissection, its separators gathered last (the last rank's block), and METIS
-// on the vertex graph takes seconds at a million unknowns. A Hilbert curve gives
-// compact blocks in O(n log n): at 1.4 million unknowns on two ranks the PETSc
-// analysis took 0.17 s instead of 2.8 s, for as many GMRES iterations (93; 111
-// instead of 120 at 2.85 million; measured in the previous try of this change,
-// bench/petsc_study.py, docs/performance.md).
-std::vector<int> StokesAssembler::curve_rank() const { return rank_of_unknowns(hilbert_order(mesh_.vertices)); }
-
-std::vector<int> StokesAssembler::rank_of_unknowns(const std::vector<int>& vertices) const {
-  const int nv = mesh_.num_vertices();
-  std::vector<int> rank(free_.size(), 0);
-  for (int position = 0; position < nv; ++position)
-    for (int c = 0; c < 3; ++c) {
-      const int r = free_index_[c * nv + vertices[static_cast<std::size_t>(position)]];
-      if (r >= 0) rank[static_cast<std::size_t>(r)] = 3 * position + c;
-    }
-  return rank;
 }
 
 std::vector<char> StokesAssembler::pressure_unknowns() const {

@@ -71,4 +71,16 @@ Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u1, const Eigen::VectorX
   return out;
 }
 
+std::vector<std::vector<int>> vertex_neighbours(const Mesh& mesh) {
+  std::vector<std::vector<int>> adjacent(mesh.num_vertices());
+  for (const auto& tri : mesh.triangles)
+    for (int a : tri)
+      for (int b : tri) adjacent[a].push_back(b);
+  for (auto& list : adjacent) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return adjacent;
+}
+
 }  // namespace fsi

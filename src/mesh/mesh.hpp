@@ -52,4 +52,8 @@ MeshStatistics statistics(const Mesh& mesh);
 // Deformed copy: vertex i moved by displacement (u1[i], u2[i]).
 Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u1, const Eigen::VectorXd& u2);
 
+// Per vertex, the sorted vertices that share a triangle with it, itself among them
+// (the pattern of a P1 matrix's row).
+std::vector<std::vector<int>> vertex_neighbours(const Mesh& mesh);
+
 }  // namespace fsi
