@@ -72,13 +72,8 @@ double PetscSolver::residual_tolerance() const {
   return iterative_ ? std::max(1e-8, 10 * options_.tol) : SparseDirectSolver::residual_tolerance();
 }
 
-// On several ranks each owns a contiguous block of rows (petsc_plugin.cpp); the
-// assembler numbers the unknowns field by field (v1, v2, p), so a block would be a
-// field, not a part of the domain: the pressure's block solve on one rank alone, and
-// every velocity row coupled to another rank's. An order that keeps neighbours
-// together instead makes each block a part of the domain: the caller's
-// (set_locality_order), or METIS's nested dissection of the matrix's graph. Every rank
-// computes the same order from the same mesh or matrix.
+// SolverFailure naming the most ranks n unknowns can feed, if fewer than
+// min_unknowns_per_rank fall to each rank.
 void PetscSolver::require_enough_unknowns(Eigen::Index n) const {
   const Eigen::Index most = std::max<Eigen::Index>(1, n / options_.min_unknowns_per_rank);
   if (ranks_ > 1 && n / ranks_ < options_.min_unknowns_per_rank)
@@ -89,7 +84,14 @@ void PetscSolver::require_enough_unknowns(Eigen::Index n) const {
         std::to_string(most) + (most == 1 ? " rank" : " ranks"));
 }
 
-// pivots[k]: the k-th unknown's old number. This rank's block of rows in that order.
+// On several ranks each owns a contiguous block of rows (petsc_plugin.cpp); the
+// assembler numbers the unknowns field by field (v1, v2, p), so a block would be a
+// field, not a part of the domain: the pressure's block solve on one rank alone, and
+// every velocity row coupled to another rank's. An order that keeps neighbours
+// together instead makes each block a part of the domain: the caller's
+// (set_locality_order), or METIS's nested dissection of the matrix's graph. Every rank
+// computes the same order from the same mesh or matrix.
+// pivots[k]: the k-th unknown's old number; this rank's block of rows in that order.
 void PetscSolver::set_order(const std::vector<int>& pivots) {
   const auto n = static_cast<Eigen::Index>(pivots.size());
   order_.resize(n);
