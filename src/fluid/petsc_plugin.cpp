@@ -338,7 +338,12 @@ std::string update_values(Solver& s, const PetscCsr& m) {
 
 std::string set_operator(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
-  if (std::string e = s.A ? update_values(s, m) : first_operator(s, m); !e.empty()) return e;
+  return s.A ? update_values(s, m) : first_operator(s, m);
+}
+
+std::string set_up(void* handle) {
+  auto& s = *static_cast<Solver*>(handle);
+  if (!s.A) return "set_up() before set_operator()";
   if (s.config.iterative && s.M)
     if (std::string e = schur_preconditioner(s); !e.empty()) return e;
   FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
@@ -389,8 +394,8 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
 }
 
 const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, row_block,         sum_over_ranks,
-                             largest_over_ranks,  create,     set_operator,      set_pressure_mass,
-                             solve,               destroy};
+                             largest_over_ranks,  create,     set_operator,      set_up,
+                             set_pressure_mass,   solve,      destroy};
 
 }  // namespace
 }  // namespace fsi

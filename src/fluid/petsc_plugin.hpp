@@ -62,9 +62,12 @@ struct PetscPlugin {
   int (*largest_over_ranks)(int local);
   // A solver (null and `error` set if it cannot be made).
   void* (*create)(const PetscSolverConfig& config, std::string& error);
-  // The operator: its first call fixes the pattern; every call refactorises
-  // (direct) or rebuilds the preconditioner (iterative).
+  // The operator's values (copied): its first call fixes the pattern.
   std::string (*set_operator)(void* solver, const PetscCsr& A);
+  // After set_operator: the factorisation (direct), or the Schur preconditioner's
+  // matrix and the preconditioner's set-up (iterative). Apart from set_operator so that
+  // the caller can free its rows first: the set-up is the memory's peak.
+  std::string (*set_up)(void* solver);
   // The pressure mass matrix M_w on the pressure unknowns, this rank's rows of it
   // (iterative), before set_operator: the Schur preconditioner is then
   // S_p = D − B diag(A)⁻¹ Bᵀ − M_w, built from the operator by PETSc (without it,
