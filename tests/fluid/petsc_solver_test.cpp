@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <csignal>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -259,6 +261,43 @@ TEST(PetscSolver, AStopAskedOfOneRankIsEveryRanks) {
   EXPECT_EQ(interrupt_signal(), SIGTERM);
   clear_interrupt();
   EXPECT_FALSE(interrupt_requested());
+}
+
+// A non-finite entry in one rank's rows alone fails every rank (on_every_rank), before
+// the collective factorisation or solve that the other ranks would otherwise wait in
+// for ever: on two ranks (ctest Mpi.PetscSolversOnTwoRanks, whose time limit catches
+// a hang) only the last rank's matrix, then its right-hand side, holds a NaN.
+TEST(PetscSolver, ANonFiniteEntryOnOneRankFailsEveryRank) {
+  if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
+  PetscSolver solver("petsc-mumps", small(1e-10, 10));
+  const int n = 400;
+  std::vector<int> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  solver.set_locality_order(order);
+  const std::vector<char> here = solver.rows_here();  // empty: all (one rank)
+  const auto held = [&here](int i) { return here.empty() || here[static_cast<std::size_t>(i)]; };
+  std::vector<Eigen::Triplet<double>> entries;
+  int last_held = -1;
+  for (int i = 0; i < n; ++i) {
+    if (!held(i)) continue;
+    last_held = i;
+    for (int j = std::max(0, i - 1); j <= std::min(n - 1, i + 1); ++j) entries.emplace_back(i, j, i == j ? 2.0 : -1.0);
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  solver.analyze(A);
+  solver.factorize(A);
+  const bool last_rank = launched_rank() == launched_ranks() - 1;
+  Eigen::SparseMatrix<double> broken = A;
+  if (last_rank) broken.coeffRef(last_held, last_held) = std::nan("");
+  EXPECT_THROW(solver.factorize(broken), SolverFailure);
+  solver.factorize(A);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < n; ++i)
+    if (held(i)) b[i] = 1.0;
+  EXPECT_NO_THROW(solver.solve(b));
+  if (last_rank) b[last_held] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(solver.solve(b), SolverFailure);
 }
 
 TEST(PetscSolver, WithoutThePluginItIsASolverFailureNamingThePackage) {
