@@ -13,11 +13,12 @@ WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, Fl
 // the assembler then assembles only this rank's rows.
 void WholeSolve::prepare() {
   if (prepared_) return;
-  prepared_ = true;
   solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
-  if (!solver_->wants_locality_order()) return;
-  solver_->set_locality_order(assembler_.curve_rank());
-  assembler_.share_rows(solver_->rows_here());
+  if (solver_->wants_locality_order()) {  // refused (too few unknowns a rank): not prepared
+    solver_->set_locality_order(assembler_.curve_rank());
+    assembler_.share_rows(solver_->rows_here());
+  }
+  prepared_ = true;
 }
 
 // Assembles K (incrementally), factorises all of it (one symbolic analysis for the
