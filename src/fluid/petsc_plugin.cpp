@@ -22,6 +22,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <string>
 
@@ -92,7 +93,8 @@ std::string sum_over_ranks(double* values, int count) {
 
 int largest_over_ranks(int local) {
   int largest = local;
-  if (MPI_Allreduce(&local, &largest, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD) != MPI_SUCCESS) return 15;
+  if (MPI_Allreduce(&local, &largest, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return SIGTERM;  // a failed exchange stops the run
   return largest;
 }
 
@@ -285,8 +287,8 @@ std::string schur_preconditioner(Solver& s) {
   FSI_TRY(MatCreateVecs(s.A, nullptr, &x.diagonal));
   FSI_TRY(MatGetDiagonal(s.A, x.diagonal));
   FSI_TRY(MatCreateSubMatrix(s.A, s.fields[0], s.fields[1], MAT_INITIAL_MATRIX, &x.up));
-  FSI_TRY(MatCreateVecs(x.up, nullptr,
-                        &x.inverse));  // laid out as B^T's rows: this rank's velocity rows
+  // Laid out as Bᵀ's rows: this rank's velocity rows.
+  FSI_TRY(MatCreateVecs(x.up, nullptr, &x.inverse));
   const PetscScalar* d = nullptr;
   PetscScalar* inverse = nullptr;
   FSI_TRY(VecGetArrayRead(x.diagonal, &d));

@@ -162,7 +162,7 @@ void PetscSolver::analyze_pattern(const Eigen::SparseMatrix<double>& A) {
   p_last_ = p_first_ + pressures(first_, last_);
   PetscSolverConfig config{iterative_, symmetric_, options_.tol, options_.max_iterations,
                            std::move(is_pressure)};
-  is_pressure_ordered_ = config.is_pressure;
+  pressure_order_ = pressure_order(config.is_pressure);
   std::string error;
   solver_ = plugin_->create(config, error);
   if (!solver_) throw SolverFailure(name_ + ": " + error);
@@ -217,11 +217,12 @@ OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, in
 }  // namespace
 
 // The pressure's unknowns' numbers among themselves in order_'s order (the pressure
-// mass matrix's rows and columns in the plugin's numbering), by their old ones.
-std::vector<int> PetscSolver::pressure_order() const {
-  std::vector<int> ordered_local(is_pressure_ordered_.size(), -1), to;
+// mass matrix's rows and columns in the plugin's numbering), by their old ones;
+// is_pressure_ordered flags the unknowns in order_'s order.
+std::vector<int> PetscSolver::pressure_order(const std::vector<char>& is_pressure_ordered) const {
+  std::vector<int> ordered_local(is_pressure_ordered.size(), -1), to;
   for (std::size_t k = 0, np = 0; k < ordered_local.size(); ++k)
-    if (is_pressure_ordered_[k]) ordered_local[k] = static_cast<int>(np++);
+    if (is_pressure_ordered[k]) ordered_local[k] = static_cast<int>(np++);
   for (std::size_t i = 0; i < is_pressure_.size(); ++i)
     if (is_pressure_[i])
       to.push_back(
@@ -231,8 +232,7 @@ std::vector<int> PetscSolver::pressure_order() const {
 
 void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
   if (wants_pressure_mass() && pressure_mass_.rows() > 0) {
-    const std::vector<int> to = pressure_order();
-    const OrderedRows M = ordered_rows(pressure_mass_, to.data(), p_first_, p_last_);
+    const OrderedRows M = ordered_rows(pressure_mass_, pressure_order_.data(), p_first_, p_last_);
     const auto np = static_cast<int>(pressure_mass_.rows());
     if (const std::string error = plugin_->set_pressure_mass(solver_, M.csr(np, p_first_, p_last_));
         !error.empty())

@@ -50,7 +50,7 @@ class PetscSolver final : public SparseDirectSolver {
   void set_order(const std::vector<int>& pivots);
   void order_for_ranks(const Eigen::SparseMatrix<double>& A);
   double sum_over_ranks(double value) const;
-  std::vector<int> pressure_order() const;
+  std::vector<int> pressure_order(const std::vector<char>& is_pressure_ordered) const;
 
   std::string name_;
   LinearSolverOptions options_;
@@ -58,7 +58,8 @@ class PetscSolver final : public SparseDirectSolver {
   const PetscPlugin* plugin_ = nullptr;
   int ranks_ = 1;
   void* solver_ = nullptr;
-  std::vector<char> is_pressure_, is_pressure_ordered_;
+  std::vector<char> is_pressure_;
+  std::vector<int> pressure_order_;  // pressure_order's, fixed at the analysis
   // Old number → the plugin's (identity on one rank; set_order), and this rank's rows
   // in the plugin's numbering, [first_, last_), and of the pressure's, [p_first_, p_last_).
   Eigen::PermutationMatrix<Eigen::Dynamic> order_;
