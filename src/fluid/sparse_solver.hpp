@@ -6,8 +6,10 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fsi {
@@ -29,12 +31,15 @@ struct FactorStatistics {
   double flops = -1;
 };
 
-// An iterative solver's controls (fluid.linear_tol, fluid.linear_max_iterations).
+// An iterative solver's controls (fluid.linear_tol, fluid.linear_max_iterations,
+// fluid.krylov).
 struct LinearSolverOptions {
   LinearSolverOptions() = default;
-  LinearSolverOptions(double tol_, int max_iterations_) : tol(tol_), max_iterations(max_iterations_) {}
+  LinearSolverOptions(double tol_, int max_iterations_, std::string krylov_ = "gmres")
+      : tol(tol_), max_iterations(max_iterations_), krylov(std::move(krylov_)) {}
   double tol = 1e-10;  // ‖b − A x‖ ≤ tol ‖b‖
   int max_iterations = 1000;
+  std::string krylov = "gmres";  // "gmres" | "bicgstab" (PetscSolverConfig::krylov)
   // The iterative solver's Schur preconditioner: S_p = D − B diag(A)⁻¹ Bᵀ alone
   // ("selfp"), or minus the fluid's pressure mass matrix too (petsc_plugin.cpp).
   bool schur_mass = true;
@@ -104,7 +109,15 @@ class SparseDirectSolver {
   int last_iterations_ = -1;  // set by an iterative solve_factorized
 
  private:
-  std::vector<int> outer_, inner_;  // the analysed pattern
+  // The analysed pattern, kept as its size and a fingerprint: a copy of its indices
+  // would be 4 bytes a nonzero (19 MB at 223 256 unknowns, issue 32's memory budget).
+  struct Pattern {
+    Eigen::Index n = -1, nonzeros = -1;
+    std::uint64_t fingerprint = 0;
+    bool operator==(const Pattern&) const = default;
+  };
+  static Pattern pattern_of(const Eigen::SparseMatrix<double>& A);
+  Pattern analysed_;
   int analyses_ = 0, factorizations_ = 0;
   bool factorized_ = false;
 };

@@ -1,6 +1,8 @@
 #include "fluid/stokes_assembler.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -112,9 +114,13 @@ void StokesAssembler::build_whole_pattern() {
   std::copy(outer_index.begin(), outer_index.end(), K_.outerIndexPtr());
   std::copy(inner_index.begin(), inner_index.end(), K_.innerIndexPtr());
   std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
-  slot_.assign(81 * static_cast<std::size_t>(triangles_here()), -1);
+  slot_.assign(81 * static_cast<std::size_t>(triangles_here()), 0);
   const int* outer = K_.outerIndexPtr();
   const int* inner = K_.innerIndexPtr();
+  for (int col = 0; col < n; ++col)
+    if (outer[col + 1] - outer[col] > std::numeric_limits<std::uint16_t>::max())
+      throw std::invalid_argument("fluid mesh: a vertex is shared by more than 21 844 triangles; the "
+                                  "assembly's offsets (16 bits) cannot address its column");
   for (int k = 0; k < triangles_here(); ++k) {
     const int t = visited(k);
     for (int i = 0; i < 9; ++i)
@@ -123,7 +129,7 @@ void StokesAssembler::build_whole_pattern() {
         const int c = free_index_[fluid_dof(mesh_.triangles[t], j, nv)];
         if (r < 0 || c < 0 || !holds(r)) continue;
         const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
-        slot_[81 * static_cast<std::size_t>(k) + 9 * i + j] = static_cast<int>(pos - inner);
+        slot_[81 * static_cast<std::size_t>(k) + 9 * i + j] = static_cast<std::uint16_t>(pos - (inner + outer[c]));
       }
   }
 }
@@ -154,7 +160,7 @@ int StokesAssembler::triangles_here() const {
   return row_here_.empty() ? mesh_.num_triangles() : static_cast<int>(triangles_here_.size());
 }
 
-const int* StokesAssembler::slots(int t) const {
+const std::uint16_t* StokesAssembler::slots(int t) const {
   const int k = here_index_.empty() ? t : here_index_[static_cast<std::size_t>(t)];
   return &slot_[81 * static_cast<std::size_t>(k)];
 }
@@ -196,15 +202,18 @@ void StokesAssembler::add_element(int t, double kappa, double sign) {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
   const CondensedElement ce = condense(local(t, kappa), load(t));
-  const int* slot = slots(t);
+  const std::uint16_t* slot = slots(t);
+  std::array<int, 9> column;  // K's column of each local dof, −1 where prescribed
+  for (int j = 0; j < 9; ++j) column[j] = free_index_[fluid_dof(tri, j, nv)];
+  const int* outer = K_.outerIndexPtr();
   double* values = K_.valuePtr();
   for (int i = 0; i < 9; ++i) {
-    const int r = free_index_[fluid_dof(tri, i, nv)];
+    const int r = column[i];
     if (r < 0 || !holds(r)) continue;
     rhs_[r] += sign * ce.F[i];
     for (int j = 0; j < 9; ++j) {
-      if (slot[9 * i + j] >= 0)
-        values[slot[9 * i + j]] += sign * ce.K(i, j);
+      if (column[j] >= 0)
+        values[outer[column[j]] + slot[9 * i + j]] += sign * ce.K(i, j);
       else  // prescribed column: lift to the right-hand side
         rhs_[r] -= sign * ce.K(i, j) * z_fixed_[fluid_dof(tri, j, nv)];
     }

@@ -120,7 +120,14 @@ TEST_P(EverySolver, RefusesAPatternOtherThanTheAnalysedOne) {
   Eigen::SparseMatrix<double> other = stokes.matrix();
   other.prune([](Eigen::Index i, Eigen::Index j, double) { return i == j || (i != 0 && j != 0); });
   EXPECT_THROW(solver->factorize(other), std::logic_error);
+  // The same size and count, one entry moved to another row of its column: only the
+  // pattern's fingerprint can tell.
+  Eigen::SparseMatrix<double> moved = stokes.matrix();
+  moved.innerIndexPtr()[moved.outerIndexPtr()[1] - 1] += 1;  // column 0's last row, one down
+  EXPECT_THROW(solver->factorize(moved), std::logic_error);
   EXPECT_THROW(solver->solve(stokes.rhs()), std::logic_error) << "no factorisation yet";
+  solver->factorize(stokes.matrix());
+  EXPECT_THROW(solver->solve(Eigen::VectorXd::Zero(3)), std::invalid_argument);
 }
 
 // An exactly singular matrix with the analysed pattern: one dof's row and column

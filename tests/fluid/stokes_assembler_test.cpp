@@ -4,7 +4,9 @@
 // add up to the whole system; a share visits only the triangles that touch its rows.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fluid/stokes_assembler.hpp"
@@ -100,6 +102,42 @@ TEST(StokesAssembler, AShareMustHaveOneFlagPerUnknown) {
   const Channel channel;
   StokesAssembler a = channel.assembler();
   EXPECT_THROW(a.share_rows(std::vector<char>(static_cast<std::size_t>(a.unknowns()) + 1, 1)), std::invalid_argument);
+}
+
+// K's entries are addressed by their 16-bit offset in their column: a column longer
+// than 65 535 entries (a vertex shared by more than 21 844 triangles, all of its three
+// unknowns free) is refused by name, never written past. A fan of 21 845 thin
+// triangles around one vertex, tractions only, is the smallest such mesh.
+TEST(StokesAssembler, AVertexInMoreTrianglesThanTheOffsetsAddressIsRefusedByName) {
+  for (const int m : {21844, 21845}) {
+    Mesh fan;
+    fan.vertices.push_back(Point(0, 0));
+    for (int i = 0; i < m; ++i) {
+      const double a = 2 * M_PI * i / m;
+      fan.vertices.push_back(Point(std::cos(a), std::sin(a)));
+    }
+    const int wall = fan.add_label("wall");
+    for (int i = 0; i < m; ++i) {
+      const int a = 1 + i, b = 1 + (i + 1) % m;
+      fan.triangles.push_back({0, a, b});
+      fan.boundary_edges.push_back({{a, b}, wall});
+    }
+    FluidBoundaryConditions bc;
+    bc.tractions.push_back({wall, [](const Point&) { return Point(0, 0); }});
+    StokesAssembler assembler(fan, 1.0, [](const Point&) { return Point(0, 0); }, bc);
+    const Eigen::VectorXd chi = Eigen::VectorXd::Zero(m);
+    if (m == 21844) {
+      assembler.assemble_full(chi, 1.0);  // 65 535 entries in the centre's columns: the limit
+      EXPECT_EQ(assembler.matrix().col(0).nonZeros(), 65535);
+    } else {
+      try {
+        assembler.assemble_full(chi, 1.0);
+        FAIL() << "a column of 65 538 entries was accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("21 844 triangles"), std::string::npos) << e.what();
+      }
+    }
+  }
 }
 
 }  // namespace
