@@ -71,6 +71,7 @@ class PenalisedStokes {
   // and its controls, on the whole factorisation. Before the first solve and before
   // set_navier_stokes (std::logic_error otherwise).
   void set_linear_solver(const std::string& solver, const LinearSolverOptions& options);
+  const LinearSolverOptions& linear_options() const { return linear_options_; }
   // Newton's report (null for Stokes).
   const FluidNewtonReport* newton() const { return newton_ ? &newton_->report() : nullptr; }
   // A further term of the operator (mini_element.hpp ElementTerm: convection for

@@ -33,6 +33,9 @@ struct PetscSolverConfig {
   bool symmetric = false;  // values symmetric: MUMPS LDLᵀ instead of LU
   double tol = 1e-10;      // relative to ‖b‖, the residual's own norm (iterative)
   int max_iterations = 1000;
+  // The Krylov method (iterative): "gmres" (restart 100) or "bicgstab", whose memory
+  // does not grow with the iterations (fluid.krylov).
+  std::string krylov = "gmres";
   // Per unknown, 1 for the pressure's (the saddle point's second field), 0 for the
   // velocity's: the block preconditioner's split (iterative).
   std::vector<char> is_pressure;
@@ -78,6 +81,6 @@ struct PetscPlugin {
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 4;
+inline constexpr int kPetscPluginVersion = 5;
 
 }  // namespace fsi

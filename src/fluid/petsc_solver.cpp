@@ -160,7 +160,7 @@ void PetscSolver::analyze_pattern(const Eigen::SparseMatrix<double>& A) {
   };
   p_first_ = pressures(0, first_);
   p_last_ = p_first_ + pressures(first_, last_);
-  PetscSolverConfig config{iterative_, symmetric_, options_.tol, options_.max_iterations,
+  PetscSolverConfig config{iterative_, symmetric_, options_.tol, options_.max_iterations, options_.krylov,
                            std::move(is_pressure)};
   pressure_order_ = pressure_order(config.is_pressure);
   std::string error;
@@ -267,7 +267,7 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
     throw SolverFailure(
         name_ + ": " + error + " after " + std::to_string(report.iterations) +
         " iterations; relative residuals, the last " + std::to_string(shown) + ": " + history +
-        " (fluid.linear_tol = " + shortest(options_.tol) +
+        " (fluid.krylov = \"" + options_.krylov + "\", fluid.linear_tol = " + shortest(options_.tol) +
         ", fluid.linear_max_iterations = " + std::to_string(options_.max_iterations) + ")");
   }
   last_solution_ = x;

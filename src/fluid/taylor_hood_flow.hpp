@@ -86,6 +86,7 @@ class TaylorHoodFlow {
   int chord_steps() const { return chord_steps_; }  // over the run: steps on reused factors
   int analyses() const { return solver_->analyses(); }
   std::string solver_name() const { return solver_->name(); }
+  const TaylorHoodOptions& options() const { return options_; }
   const TaylorHoodTiming& timing() const { return timing_; }
 
  private:

@@ -177,6 +177,7 @@ void read_linear_solver(Section& s, const Origin& origin, FluidParams& p, bool s
   p.linear_solver = s.choice("linear_solver", p.linear_solver, {"mumps", "petsc-mumps", "petsc-iterative"});
   p.linear_tol = s.number("linear_tol", p.linear_tol, {1e-15, 1e-2, true, true});
   p.linear_max_iterations = s.integer("linear_max_iterations", p.linear_max_iterations, 1, 100000);
+  p.krylov = s.choice("krylov", p.krylov, {"gmres", "bicgstab"});
   if (p.linear_solver == "mumps") {
     // Each rank would factorise the whole system alone (SPEC §13).
     if (const int ranks = launched_ranks(); ranks > 1)
@@ -509,7 +510,8 @@ toml::table fluid_toml(const FluidParams& f) {
                  {"h_obstacles", f.h_obstacles}, {"method", f.method},
                  {"model", f.model}, {"viscous_form", f.viscous_form}, {"element", f.element}, {"newton_tol", f.newton_tol},
                  {"newton_max_steps", f.newton_max_steps}, {"linear_solver", f.linear_solver},
-                 {"linear_tol", f.linear_tol}, {"linear_max_iterations", f.linear_max_iterations}};
+                 {"linear_tol", f.linear_tol}, {"linear_max_iterations", f.linear_max_iterations},
+                 {"krylov", f.krylov}};
   insert_load(ft, "Vmax", f.Vmax, f.Vmax_expression);
   if (f.rho > 0) ft.insert("rho", f.rho);  // 0: not given
   if (f.band_box) ft.insert("band", toml::array{(*f.band_box)[0], (*f.band_box)[1], (*f.band_box)[2], (*f.band_box)[3]});

@@ -104,6 +104,9 @@ struct FluidParams {
   std::string linear_solver = "mumps";
   double linear_tol = 1e-10;
   int linear_max_iterations = 1000;
+  // "petsc-iterative"'s Krylov method: "gmres" (restart 100, the default) or
+  // "bicgstab" (a fixed memory of 7 vectors: for the largest meshes).
+  std::string krylov = "gmres";
   // With "schur": far fields whose factorisation takes more memory than this (MB,
   // MUMPS's figure) are not kept between expansions, each expansion refactorises
   // them (one more far-field factorisation per run for about half the peak memory).

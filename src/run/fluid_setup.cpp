@@ -112,7 +112,7 @@ FluidSetup make_fluid(const Case& c, Mesh mesh, double eps) {
       *s.mesh, f.mu, eps, fluid_body_force(f), box_boundary_conditions(*s.mesh, f),
       f.navier_stokes() ? kNavierStokesSolver : kDefaultSparseSolver, factorization, f.keep_far_factors_mb);
   if (f.linear_solver != "mumps")
-    s.stokes->set_linear_solver(f.linear_solver, LinearSolverOptions(f.linear_tol, f.linear_max_iterations));
+    s.stokes->set_linear_solver(f.linear_solver, LinearSolverOptions(f.linear_tol, f.linear_max_iterations, f.krylov));
   set_fluid_model(*s.stokes, f, c.time && c.time->convection == "semi-implicit");
   s.locator = std::make_unique<PointLocator>(*s.mesh);
   s.chi = std::make_unique<ChiComputer>(*s.mesh, *s.locator, f.chi);
@@ -200,10 +200,13 @@ Json flow_json(const Case& c) {
   return j;
 }
 
-// SPEC §13: fluid.linear_solver as given, and an iterative solver's iterations per solve.
-void add_linear_solver_json(Json& j, const std::string& solver, const std::vector<int>& iterations) {
+// SPEC §13: fluid.linear_solver as given, and an iterative solver's Krylov method and
+// iterations per solve.
+void add_linear_solver_json(Json& j, const std::string& solver, const std::vector<int>& iterations,
+                            const std::string& krylov) {
   j["linear_solver"] = solver.rfind("petsc-", 0) == 0 ? solver : "mumps";
   if (solver != "petsc-iterative") return;
+  j["krylov"] = krylov;
   j["linear_iterations"] = iterations;
   long total = 0;
   for (int n : iterations) total += n;
@@ -225,7 +228,7 @@ Json fluid_json(const PenalisedStokes& stokes) {
             {"factorization_s", t.factorization},
             {"solve_s", t.solve}};
   j["factorization"] = stokes.factorization() == FluidFactorization::schur ? "schur" : "whole";
-  add_linear_solver_json(j, stokes.solver_name(), t.linear_iterations);
+  add_linear_solver_json(j, stokes.solver_name(), t.linear_iterations, stokes.linear_options().krylov);
   if (const FluidNewtonReport* n = stokes.newton()) j["newton"] = newton_json(*n);
   // The substructured solve: far-field factorisations (one per near region; their
   // time is part of factorization_s), the expansions (part of solve_s), the last

@@ -68,7 +68,8 @@ const FluidSolution& solve_fluid_once(PenalisedStokes& stokes, const Eigen::Vect
 Json fluid_json(const PenalisedStokes& stokes);
 // fluid_json's linear_solver (SPEC §13: "mumps" for every direct solver called directly)
 // and, for "petsc-iterative", linear_iterations per solve and their total.
-void add_linear_solver_json(Json& j, const std::string& solver, const std::vector<int>& iterations);
+void add_linear_solver_json(Json& j, const std::string& solver, const std::vector<int>& iterations,
+                            const std::string& krylov);
 
 // The Reynolds number ρ Ū L / μ of a Navier–Stokes case (SPEC §10): Ū = 2 Vmax / 3,
 // the parabolic inflow's mean, and L the first obstacle's width across the inflow

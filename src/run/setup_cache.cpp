@@ -32,7 +32,7 @@ std::string fluid_mesh_key(const Case& c) {
   Json geometry = to_json(*c.fluid);
   for (const char* solver_only : {"mu", "f", "Vmax", "chi", "factorization", "keep_far_factors_mb", "left", "bottom",
                                   "right", "top", "model", "rho", "newton_tol", "newton_max_steps", "viscous_form",
-                                  "linear_solver", "linear_tol", "linear_max_iterations"})
+                                  "linear_solver", "linear_tol", "linear_max_iterations", "krylov"})
     geometry.erase(solver_only);
   return json_text(geometry) + json_text(to_json(c.obstacle)) + obstacles_text(c) + '\0' + c.fluid->mesh;
 }

@@ -44,7 +44,7 @@ TaylorHoodSetup make_taylor_hood(const Case& c, Mesh mesh, double t) {
   options.tol = f.newton_tol;
   options.max_steps = f.newton_max_steps;
   if (f.linear_solver != "mumps") options.solver = f.linear_solver;
-  options.linear = LinearSolverOptions(f.linear_tol, f.linear_max_iterations);
+  options.linear = LinearSolverOptions(f.linear_tol, f.linear_max_iterations, f.krylov);
   s.flow = std::make_unique<TaylorHoodFlow>(*s.system, options);
   return s;
 }
@@ -88,7 +88,7 @@ Json taylor_hood_json(const TaylorHoodSetup& s) {
             {"factorization_s", t.factorization},
             {"solve_s", t.solve},
             {"factorization", "whole"}};
-  add_linear_solver_json(j, flow.solver_name(), t.linear_iterations);
+  add_linear_solver_json(j, flow.solver_name(), t.linear_iterations, flow.options().linear.krylov);
   if (s.system->model().rho > 0) j["newton"] = newton_json(flow.report());
   return j;
 }

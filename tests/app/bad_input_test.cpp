@@ -208,6 +208,7 @@ std::vector<BadInput> bad_values_and_obstacles() {
       {"linear_solver_unknown", kValid + "[fluid]\n", "--set fluid.linear_solver=\"hypre\"", {"fluid.linear_solver", "petsc-iterative"}},
       {"linear_tol_too_large", kValid + "[fluid]\n", "--set fluid.linear_tol=0.5", {"fluid.linear_tol", "[1e-15, 0.01]"}},
       {"linear_max_iterations_zero", kValid + "[fluid]\n", "--set fluid.linear_max_iterations=0", {"fluid.linear_max_iterations", "[1, 100000]"}},
+      {"krylov_unknown", kValid + "[fluid]\n", "--set fluid.krylov=\"cg\"", {"fluid.krylov", "\"gmres\", \"bicgstab\""}},
       {"viscous_form_unknown", kValid + "[fluid]\n", "--set fluid.viscous_form=laplace", {"fluid.viscous_form", "\"symmetric\", \"gradient\""}},
       // SPEC §12: [time], so far for the fluid alone.
       {"time_dt_zero", kValid + "[fluid]\n", "--set structure.shape=none --set fluid.rho=1 --set time.dt=0 --set time.t_end=1", {"time.dt", "[1e-30, 1e+30]"}},

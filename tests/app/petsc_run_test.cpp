@@ -17,11 +17,13 @@ using testing::scratch_dir;
 using testing::slurp;
 
 // The §7.2 case on its coarse fluid (hF = 0.02), no figures.
-json run_with(const std::string& solver, const std::filesystem::path& dir) {
+json run_with(const std::string& solver, const std::filesystem::path& dir, const std::string& krylov = "gmres") {
+  const std::string out = solver + "-" + krylov;
   const testing::CliRun r = run_cli("run -q --set fluid.h=0.02 --set output.png=false --set output.vtu=false "
-                                    "--set fluid.linear_solver='\"" + solver + "\"' --out " + solver, dir);
+                                    "--set fluid.linear_solver='\"" + solver + "\"' --set fluid.krylov=" + krylov +
+                                        " --out " + out, dir);
   EXPECT_EQ(r.status, 0) << solver << ": " << r.err;
-  return json::parse(slurp(dir / solver / "summary.json"));
+  return json::parse(slurp(dir / out / "summary.json"));
 }
 
 TEST(PetscRun, EverySolverGivesTheDirectAnswer) {
@@ -41,6 +43,10 @@ TEST(PetscRun, EverySolverGivesTheDirectAnswer) {
     EXPECT_NEAR(s["max_displacement"].get<double>(), mumps["max_displacement"].get<double>(), 1e-9) << solver;
     if (std::string(solver) == "petsc-iterative") iterative = s;
   }
+  const json bicgstab = run_with("petsc-iterative", dir, "bicgstab");
+  EXPECT_EQ(bicgstab["fluid"]["krylov"], "bicgstab");
+  EXPECT_EQ(bicgstab["iterations"], mumps["iterations"]);
+  EXPECT_NEAR(bicgstab["max_displacement"].get<double>(), mumps["max_displacement"].get<double>(), 1e-9);
   // One count per solve (a pass whose χ did not change reuses the last solution).
   ASSERT_TRUE(iterative["fluid"].contains("linear_iterations"));
   EXPECT_EQ(iterative["fluid"]["linear_iterations"].size(), iterative["fluid"]["factorizations"].get<std::size_t>());

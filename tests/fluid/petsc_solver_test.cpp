@@ -59,8 +59,8 @@ struct Cavity {
 
 // The solver's options, allowing the few unknowns a rank of these small problems when
 // this test runs on two ranks (ctest Mpi.PetscSolversOnTwoRanks).
-LinearSolverOptions small(double tol, int max_iterations) {
-  LinearSolverOptions options(tol, max_iterations);
+LinearSolverOptions small(double tol, int max_iterations, const char* krylov = "gmres") {
+  LinearSolverOptions options(tol, max_iterations, krylov);
   options.min_unknowns_per_rank = 1;
   return options;
 }
@@ -123,24 +123,26 @@ TEST(PetscSolver, EachRankAssemblesOnlyItsOwnRows) {
   }
 }
 
-// The iterative solver to 1e-10 relative residual: the solution to ~1e-8, with as
-// many iterations at ε = 1e-7 as at 1e-2 within a factor (the preconditioner follows
-// the penalty: petsc_plugin.cpp).
+// The iterative solver to 1e-10 relative residual, with either Krylov method
+// (fluid.krylov): the solution to ~1e-8, with as many iterations at ε = 1e-7 as at
+// 1e-2 within a factor (the preconditioner follows the penalty: petsc_plugin.cpp).
 TEST(PetscSolver, IterativeAgreesWithMumpsFromEps1e2To1e7InBoundedIterations) {
   if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
   const Cavity cavity;
-  std::vector<int> iterations;
-  for (double eps : {1e-2, 1e-5, 1e-7}) {
-    auto direct = cavity.stokes(eps), petsc = cavity.stokes(eps);
-    petsc->set_linear_solver("petsc-iterative", small(1e-10, 500));
-    const FluidSolution expected = direct->solve();
-    expect_close(petsc->solve(), expected, 1e-7, "petsc-iterative, ε = " + std::to_string(eps));
-    ASSERT_EQ(petsc->timing().linear_iterations.size(), 1u);
-    iterations.push_back(petsc->timing().linear_iterations[0]);
-    std::printf("ε = %g: %d iterations\n", eps, iterations.back());
+  for (const char* krylov : {"gmres", "bicgstab"}) {
+    std::vector<int> iterations;
+    for (double eps : {1e-2, 1e-5, 1e-7}) {
+      auto direct = cavity.stokes(eps), petsc = cavity.stokes(eps);
+      petsc->set_linear_solver("petsc-iterative", small(1e-10, 500, krylov));
+      const FluidSolution expected = direct->solve();
+      expect_close(petsc->solve(), expected, 1e-7, std::string(krylov) + ", ε = " + std::to_string(eps));
+      ASSERT_EQ(petsc->timing().linear_iterations.size(), 1u);
+      iterations.push_back(petsc->timing().linear_iterations[0]);
+      std::printf("%s, ε = %g: %d iterations\n", krylov, eps, iterations.back());
+    }
+    EXPECT_GT(iterations.front(), 1) << krylov;
+    EXPECT_LE(iterations.back(), 3 * iterations.front() + 10) << krylov;
   }
-  EXPECT_GT(iterations.front(), 1);
-  EXPECT_LE(iterations.back(), 3 * iterations.front() + 10);
 }
 
 // The preconditioner's quality does not decay with h: GMRES's iterations on the cavity
@@ -188,18 +190,21 @@ TEST(PetscSolver, IterativeStartsFromTheLastSolution) {
 TEST(PetscSolver, AnIterationLimitIsAFailureWithTheResidualHistory) {
   if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
   const Cavity cavity;
-  auto petsc = cavity.stokes(1e-5);
-  petsc->set_linear_solver("petsc-iterative", small(1e-12, 2));
-  try {
-    petsc->solve();
-    ADD_FAILURE() << "two iterations reached 1e-12";
-  } catch (const SolverFailure& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("did not converge"), std::string::npos) << what;
-    EXPECT_NE(what.find("relative residuals"), std::string::npos) << what;
-    EXPECT_NE(what.find("fluid.linear_max_iterations = 2"), std::string::npos) << what;
+  for (const char* krylov : {"gmres", "bicgstab"}) {
+    auto petsc = cavity.stokes(1e-5);
+    petsc->set_linear_solver("petsc-iterative", small(1e-12, 2, krylov));
+    try {
+      petsc->solve();
+      ADD_FAILURE() << krylov << ": two iterations reached 1e-12";
+    } catch (const SolverFailure& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("did not converge"), std::string::npos) << what;
+      EXPECT_NE(what.find("relative residuals"), std::string::npos) << what;
+      EXPECT_NE(what.find("fluid.linear_max_iterations = 2"), std::string::npos) << what;
+      EXPECT_NE(what.find("fluid.krylov = \"" + std::string(krylov) + "\""), std::string::npos) << what;
+    }
+    EXPECT_EQ(petsc->timing().linear_iterations, std::vector<int>{2}) << krylov;
   }
-  EXPECT_EQ(petsc->timing().linear_iterations, std::vector<int>{2});
 }
 
 // Newton's Jacobian of Navier–Stokes is unsymmetric: MUMPS's LU through PETSc gives

@@ -54,7 +54,8 @@ Json to_json(const FluidParams& f) {
             {"newton_max_steps", f.newton_max_steps},
             {"linear_solver", f.linear_solver},
             {"linear_tol", f.linear_tol},
-            {"linear_max_iterations", f.linear_max_iterations}};
+            {"linear_max_iterations", f.linear_max_iterations},
+            {"krylov", f.krylov}};
   if (f.rho > 0) j["rho"] = f.rho;  // 0: not given (Stokes)
   for (std::size_t k = 0; k < kBoxSideKeys.size(); ++k) j[kBoxSideKeys[k]] = f.sides[k];
   return j;
