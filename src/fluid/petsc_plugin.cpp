@@ -157,15 +157,21 @@ std::string set_iterative(KSP ksp, const std::string& krylov) {
   // components (the symmetric gradient) and holds the penalty's mass: BoomerAMG's
   // strength threshold 0.7 instead of its 2D default 0.25 took GMRES from 215 to 65
   // iterations at h = 0.005 and keeps them at 61-71 from h = 0.02 to 0.0025 (the
-  // §7.2 box, bench/petsc_study.py; docs/performance.md "PETSc").
+  // §7.2 box, bench/petsc_study.py; docs/performance.md "PETSc"). Aggressive
+  // coarsening on the first level of both (agg_nl 1) trades more iterations for
+  // lighter hierarchies: with BiCGStab at 5.6 M unknowns 89 against 81 iterations but
+  // 210 against 337 s and 10.7 against 11.7 GB; on the 9 424-triangle §7.2 case the
+  // same time (docs/performance.md, "The memory a triangle").
   const std::pair<const char*, const char*> inner[] = {
       {"-fluid_fieldsplit_u_ksp_type", "preonly"},
       {"-fluid_fieldsplit_u_pc_type", "hypre"},
       {"-fluid_fieldsplit_u_pc_hypre_type", "boomeramg"},
       {"-fluid_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.7"},
+      {"-fluid_fieldsplit_u_pc_hypre_boomeramg_agg_nl", "1"},
       {"-fluid_fieldsplit_p_ksp_type", "preonly"},
       {"-fluid_fieldsplit_p_pc_type", "hypre"},
-      {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"}};
+      {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"},
+      {"-fluid_fieldsplit_p_pc_hypre_boomeramg_agg_nl", "1"}};
   for (const auto& [name, value] : inner)
     if (std::string e = set_default(name, value); !e.empty()) return e;
   return "";

@@ -57,7 +57,8 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
   const double residual = norm(K * x - rhs), scale = norm(rhs);
   if (!(residual <= solver_->residual_tolerance() * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
-                        ": relative residual " + std::to_string(residual / scale) + " after the direct solve");
+                        ": relative residual " + std::to_string(residual / scale) + " after the solve (" +
+                        (solver_->last_iterations() >= 0 ? "iterative" : "direct") + ")");
   assembler_.fields(x, chi, eps, out_);
   timing_.solve += clock.elapsed();
 }
