@@ -66,7 +66,8 @@ std::string other_value(const std::string& key) {
                                                              {"structure.v0", "[0.1, 0]"},
                                                              {"structure.mass", "consistent"},
                                                              {"coupling.reuse", "3"},
-                                                             {"fluid.linear_solver", "petsc-mumps"}};
+                                                             {"fluid.linear_solver", "petsc-mumps"},
+                                                             {"fluid.krylov", "bicgstab"}};
   auto it = special.find(key);
   if (it != special.end()) return it->second;
   const Json defaults = to_json(load_case(""));
