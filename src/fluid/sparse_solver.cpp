@@ -80,7 +80,8 @@ void SparseDirectSolver::analyze(const SparseMatrix& A) {
 void SparseDirectSolver::factorize(const SparseMatrix& A) {
   if (analyses_ == 0) throw std::logic_error(name() + ": factorize() before analyze()");
   // The symbolic analysis is only valid for the pattern it was done on.
-  if (!A.isCompressed() || !(pattern_of(A) == analysed_)) throw std::logic_error(name() + ": the pattern differs from the analysed one");
+  if (!A.isCompressed() || !(pattern_of(A) == analysed_))
+    throw std::logic_error(name() + ": the pattern differs from the analysed one");
   factorized_ = false;
   require_finite_matrix(on_every_rank(all_finite(A)), name());
   factorize_values(A);

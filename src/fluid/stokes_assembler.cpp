@@ -108,6 +108,10 @@ void StokesAssembler::build_whole_pattern() {
         if (r >= 0 && holds(r)) inner_index.push_back(r);
       }
     outer_index[col + 1] = static_cast<int>(inner_index.size());
+    // The slots below are 16-bit offsets within a column.
+    if (outer_index[col + 1] - outer_index[col] > std::numeric_limits<std::uint16_t>::max())
+      throw std::invalid_argument("fluid mesh: a vertex is shared by more than 21 844 triangles; the "
+                                  "assembly's offsets (16 bits) cannot address its column");
   }
   K_ = Eigen::SparseMatrix<double>(n, n);
   K_.resizeNonZeros(static_cast<Eigen::Index>(inner_index.size()));
@@ -117,10 +121,6 @@ void StokesAssembler::build_whole_pattern() {
   slot_.assign(81 * static_cast<std::size_t>(triangles_here()), 0);
   const int* outer = K_.outerIndexPtr();
   const int* inner = K_.innerIndexPtr();
-  for (int col = 0; col < n; ++col)
-    if (outer[col + 1] - outer[col] > std::numeric_limits<std::uint16_t>::max())
-      throw std::invalid_argument("fluid mesh: a vertex is shared by more than 21 844 triangles; the "
-                                  "assembly's offsets (16 bits) cannot address its column");
   for (int k = 0; k < triangles_here(); ++k) {
     const int t = visited(k);
     for (int i = 0; i < 9; ++i)
@@ -129,7 +129,8 @@ void StokesAssembler::build_whole_pattern() {
         const int c = free_index_[fluid_dof(mesh_.triangles[t], j, nv)];
         if (r < 0 || c < 0 || !holds(r)) continue;
         const int* pos = std::lower_bound(inner + outer[c], inner + outer[c + 1], r);
-        slot_[81 * static_cast<std::size_t>(k) + 9 * i + j] = static_cast<std::uint16_t>(pos - (inner + outer[c]));
+        slot_[81 * static_cast<std::size_t>(k) + 9 * i + j] =
+            static_cast<std::uint16_t>(pos - (inner + outer[c]));
       }
   }
 }
