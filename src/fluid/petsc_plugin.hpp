@@ -26,6 +26,10 @@ struct PetscCsr {
   const int* row_start = nullptr;  // last − first + 1
   const int* column = nullptr;
   const double* value = nullptr;
+  // On one rank: the arrays may be used in place (no copy), for they stay where they
+  // are, with the values of the last set_operator, until the solver's next
+  // set_operator or destroy. Otherwise, and on several ranks, they are copied.
+  bool borrowed = false;
 };
 
 struct PetscSolverConfig {
@@ -65,7 +69,7 @@ struct PetscPlugin {
   int (*largest_over_ranks)(int local);
   // A solver (null and `error` set if it cannot be made).
   void* (*create)(const PetscSolverConfig& config, std::string& error);
-  // The operator's values (copied): its first call fixes the pattern.
+  // The operator's values (copied unless borrowed): its first call fixes the pattern.
   std::string (*set_operator)(void* solver, const PetscCsr& A);
   // After set_operator: the factorisation (direct), or the Schur preconditioner's
   // matrix and the preconditioner's set-up (iterative). Apart from set_operator so that
@@ -81,6 +85,6 @@ struct PetscPlugin {
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 5;
+inline constexpr int kPetscPluginVersion = 6;
 
 }  // namespace fsi

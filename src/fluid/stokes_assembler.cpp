@@ -14,9 +14,7 @@ StokesAssembler::StokesAssembler(const Mesh& mesh, double mu, const VectorField&
                                  const FluidBoundaryConditions& bc, bool order_now)
     : mesh_(mesh), mu_(mu) {
   if (order_now) order_in_background();  // it needs the mesh only
-  const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
-  geometry_.reserve(nt);
-  for (int t = 0; t < nt; ++t) geometry_.emplace_back(mesh, t);
+  const int nv = mesh.num_vertices();
   set_body_force(f);
 
   // Prescribed velocities on the Dirichlet labels.
@@ -169,21 +167,23 @@ const std::uint16_t* StokesAssembler::slots(int t) const {
 void StokesAssembler::set_body_force(const VectorField& f) {
   const TriangleRule rule = triangle_rule(6);  // bubble (degree 3) × smooth f
   loads_.clear();
-  loads_.reserve(geometry_.size());
-  for (const P1Triangle& T : geometry_) loads_.push_back(element_load(T, f, rule));
+  loads_.reserve(static_cast<std::size_t>(mesh_.num_triangles()));
+  for (int t = 0; t < mesh_.num_triangles(); ++t) loads_.push_back(element_load(geometry(t), f, rule));
   assembled_ = false;  // K is unchanged, but rhs_ holds the old loads
 }
 
 MiniLocal StokesAssembler::local(int t, double kappa) const {
-  MiniLocal e = mini_local(geometry_[t], mu_, kappa, form_);
-  for (const auto& term : terms_) term->add(t, geometry_[t], e);
+  const P1Triangle T = geometry(t);
+  MiniLocal e = mini_local(T, mu_, kappa, form_);
+  for (const auto& term : terms_) term->add(t, T, e);
   return e;
 }
 
 ElementLoad StokesAssembler::load(int t) const {
   if (terms_.empty()) return loads_[t];
   ElementLoad load = loads_[t];
-  for (const auto& term : terms_) term->add_load(t, geometry_[t], load);
+  const P1Triangle T = geometry(t);
+  for (const auto& term : terms_) term->add_load(t, T, load);
   return load;
 }
 
@@ -199,6 +199,11 @@ void StokesAssembler::add_term(std::shared_ptr<const ElementTerm> term) {
 }
 
 // Adds sign × (the condensed element of triangle t with penalty κ) to K and rhs.
+// A symmetric element is symmetric to round-off only (the condensation's products
+// group its terms differently above and below the diagonal): each pair of K's entries
+// takes the value of its lower one (row ≥ column, what MUMPS's LDLᵀ reads), so that a
+// symmetric K is symmetric bit for bit, through updates too, and its columns are its
+// rows (PETSc then uses K's arrays as they are; petsc_solver.cpp).
 void StokesAssembler::add_element(int t, double kappa, double sign) {
   const int nv = mesh_.num_vertices();
   const auto& tri = mesh_.triangles[t];
@@ -214,7 +219,8 @@ void StokesAssembler::add_element(int t, double kappa, double sign) {
     rhs_[r] += sign * ce.F[i];
     for (int j = 0; j < 9; ++j) {
       if (column[j] >= 0)
-        values[outer[column[j]] + slot[9 * i + j]] += sign * ce.K(i, j);
+        values[outer[column[j]] + slot[9 * i + j]] +=
+            sign * (symmetric_ && r < column[j] ? ce.K(j, i) : ce.K(i, j));
       else  // prescribed column: lift to the right-hand side
         rhs_[r] -= sign * ce.K(i, j) * z_fixed_[fluid_dof(tri, j, nv)];
     }
@@ -336,13 +342,15 @@ Eigen::SparseMatrix<double> StokesAssembler::pressure_mass(const Eigen::VectorXd
   for (int d : free_)
     if (d >= 2 * nv) row[d - 2 * nv] = n++;
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(9 * geometry_.size());
-  for (int t = 0; t < static_cast<int>(geometry_.size()); ++t)
+  entries.reserve(9 * static_cast<std::size_t>(mesh_.num_triangles()));
+  for (int t = 0; t < mesh_.num_triangles(); ++t) {
+    const double area = geometry(t).area;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const int i = row[mesh_.triangles[t][a]], j = row[mesh_.triangles[t][b]];
-        if (i >= 0 && j >= 0) entries.emplace_back(i, j, weight[t] * bubble::mass_p1(geometry_[t].area, a, b));
+        if (i >= 0 && j >= 0) entries.emplace_back(i, j, weight[t] * bubble::mass_p1(area, a, b));
       }
+  }
   Eigen::SparseMatrix<double> M(n, n);
   M.setFromTriplets(entries.begin(), entries.end());
   return M;

@@ -154,6 +154,9 @@ class StokesAssembler {
   // Triangle t's local system with the penalty κ: the Stokes terms and the added ones;
   // its load: the body force's and the added terms'.
   MiniLocal local(int t, double kappa) const;
+  // Triangle t's area and gradients, computed when needed (a dozen flops beside the
+  // element's hundreds) rather than kept: 104 bytes a triangle (issue 32's memory budget).
+  P1Triangle geometry(int t) const { return P1Triangle(mesh_, t); }
   ElementLoad load(int t) const;
 
   const Mesh& mesh_;
@@ -162,7 +165,6 @@ class StokesAssembler {
   std::vector<ElementLoad> loads_;
   std::vector<std::shared_ptr<const ElementTerm>> terms_;  // beyond Stokes (add_term)
   bool symmetric_ = true;
-  std::vector<P1Triangle> geometry_;
   Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)
   std::vector<int> free_index_;        // full dof → reduced index, −1 if prescribed
   std::vector<int> free_;              // reduced index → full dof
