@@ -84,7 +84,11 @@ struct PetscPlugin {
   // read; x holds the initial guess if `warm` (iterative), the whole solution on return.
   std::string (*solve)(void* solver, const double* b, double* x, bool warm, PetscSolveReport& report);
   void (*destroy)(void* solver);
+  // Frees the iterative solver's last set-up (split, hierarchies, S_p), which the next
+  // set-up rebuilds anyway, before the caller builds the next pass's matrices; the
+  // next set_pressure_mass or set_operator does it too. Nothing for MUMPS.
+  std::string (*release)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 6;
+inline constexpr int kPetscPluginVersion = 7;
 
 }  // namespace fsi

@@ -44,6 +44,7 @@ class PetscSolver final : public SparseDirectSolver {
   void analyze_pattern(const Eigen::SparseMatrix<double>& A) override;
   void factorize_values(const Eigen::SparseMatrix<double>& A) override;
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override;
+  void release_factorization() override;
 
  private:
   void require_enough_unknowns(Eigen::Index n) const;

@@ -98,6 +98,12 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   return solve_factorized(rhs);
 }
 
+void SparseDirectSolver::release() {
+  if (!factorized_) return;
+  factorized_ = false;
+  release_factorization();
+}
+
 Eigen::VectorXd solve_counting_iterations(SparseDirectSolver& solver, const Eigen::VectorXd& rhs,
                                           std::vector<int>& iterations) {
   const auto record = [&] {

@@ -59,6 +59,10 @@ class SparseDirectSolver {
   void factorize(const Eigen::SparseMatrix<double>& A);
   // x with A x = rhs for the last factorised A (SolverFailure if rhs is not finite).
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  // Before the next pass's matrices are built: frees what the last factorisation holds
+  // and the next rebuilds anyway (PETSc's iterative set-up: petsc_solver.hpp), so that
+  // the two never live together; solve() then needs a factorize() first.
+  void release();
   virtual std::string name() const = 0;
   virtual FactorStatistics statistics() const { return {}; }
   // Whether it factors symmetric matrices only (it reads one triangle, or pivots
@@ -104,6 +108,7 @@ class SparseDirectSolver {
   virtual void analyze_pattern(const Eigen::SparseMatrix<double>& A) = 0;
   virtual void factorize_values(const Eigen::SparseMatrix<double>& A) = 0;
   virtual Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) = 0;
+  virtual void release_factorization() {}
 
  protected:
   int last_iterations_ = -1;  // set by an iterative solve_factorized

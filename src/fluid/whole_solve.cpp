@@ -40,6 +40,7 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
       timing_.analysis += clock.elapsed();
       ++timing_.analyses;
     }
+    solver_->release();  // the last set-up freed before the pressure mass matrix is built
     if (solver_->wants_pressure_mass()) {
       const Eigen::VectorXd weight = (1.0 - chi.array()) / assembler_.mu();  // the fluid's part: χ = 0
       solver_->set_pressure_mass(assembler_.pressure_mass(weight));

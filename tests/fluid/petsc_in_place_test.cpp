@@ -4,11 +4,13 @@
 // factorisation is redone), when another matrix of the same pattern comes, and a K
 // that is not its own transpose bit for bit is copied, never read as its transpose
 // (petsc-iterative: a Krylov method reads all of it).
-// Each answer against sequential MUMPS on the same matrix. On two ranks (ctest
+// Each answer against sequential MUMPS on the same matrix; a released set-up (before
+// the next pass's matrices are built) cannot solve until the next factorisation. On two ranks (ctest
 // Mpi.PetscSolversOnTwoRanks) the same answers come through the copying path.
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "fluid/sparse_solver.hpp"
@@ -72,6 +74,8 @@ TEST(PetscInPlace, TheSolutionFollowsTheOperatorsValuesAndArrays) {
     solver->describe_system(assembler.pressure_unknowns(), true);
     solver->analyze(K);
     expect_solves(*solver, K, assembler.rhs(), "first");
+    solver->release();  // the set-up freed: no solve until the next factorisation
+    EXPECT_THROW(solver->solve(assembler.rhs()), std::logic_error) << name;
     const double* values = K.valuePtr();
     assembler.assemble(channel.chi(1.5), 1e-4);  // new values in the same arrays
     ASSERT_EQ(K.valuePtr(), values);
