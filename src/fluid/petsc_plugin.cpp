@@ -2,11 +2,12 @@
 //
 // "petsc-mumps": KSPPREONLY with MUMPS's LU (LDLᵀ when symmetric), PETSc's interface
 // to the same library the default path calls directly, so that it can run on several
-// ranks. "petsc-iterative": GMRES, right-preconditioned (so that the tolerance is on
-// the true residual ‖b − A x‖ / ‖b‖), by a Schur-complement field split of the saddle
-// point [A Bᵀ; B −C] (Elman, Silvester, Wathen 2014, ch. 9): the velocity block, which
-// holds the penalty (1/ε) χ M, by one V-cycle of hypre's BoomerAMG; the Schur
-// complement by BoomerAMG on S_p = −C − B diag(A)⁻¹ Bᵀ ("selfp"), which follows the
+// ranks. "petsc-iterative": GMRES or BiCGStab, right-preconditioned (so that the
+// tolerance is on the true residual ‖b − A x‖ / ‖b‖), by the upper block factorisation
+// of the saddle point [A Bᵀ; B −C] (petsc_schur.hpp; Elman, Silvester, Wathen 2014,
+// ch. 9): the velocity block, which holds the penalty (1/ε) χ M, by one V-cycle of
+// hypre's BoomerAMG; the Schur complement by BoomerAMG on
+// S_p = −C − B diag(A)⁻¹ Bᵀ (PETSc's "selfp"), which follows the
 // penalty (where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
 // matrix would be off by 1/ε), less the fluid's weighted pressure mass matrix when
 // the caller gives it (set_pressure_mass; schur_preconditioner says why). S_p is
@@ -20,6 +21,9 @@
 #include "fluid/petsc_plugin.hpp"
 
 #include <petscksp.h>
+
+#include "fluid/petsc_schur.hpp"
+#include "fluid/petsc_try.hpp"
 
 #include <algorithm>
 #include <csignal>
@@ -40,7 +44,9 @@ PetscErrorCode record_error(MPI_Comm, int, const char* function, const char*, Pe
   return code;
 }
 
-std::string error_text(PetscErrorCode code, const char* call) {
+}  // namespace
+
+std::string petsc_error_text(PetscErrorCode code, const char* call) {
   const char* text = nullptr;
   PetscErrorMessage(code, &text, nullptr);
   std::string out =
@@ -50,12 +56,7 @@ std::string error_text(PetscErrorCode code, const char* call) {
   return out;
 }
 
-// Each PETSc call: its error returned as text from the enclosing function.
-#define FSI_TRY(call)                           \
-  do {                                          \
-    const PetscErrorCode code_ = (call);        \
-    if (code_) return error_text(code_, #call); \
-  } while (0)
+namespace {
 
 // Every rank owns a contiguous block of the rows, PETSc's even split (row_block):
 // [first, last) of the unknowns, and of the pressure's unknowns (the Schur
@@ -139,8 +140,6 @@ std::string set_direct(KSP ksp, bool symmetric) {
 // keeps 7 at the cost of two preconditioner applications an iteration
 // (docs/performance.md, "The memory a triangle").
 std::string set_iterative(KSP ksp, const std::string& krylov) {
-  PC pc;
-  FSI_TRY(KSPGetPC(ksp, &pc));
   if (krylov == "bicgstab") {
     FSI_TRY(KSPSetType(ksp, KSPBCGS));
   } else if (krylov == "gmres") {
@@ -150,12 +149,9 @@ std::string set_iterative(KSP ksp, const std::string& krylov) {
     return "unknown Krylov method \"" + krylov + "\"";
   }
   FSI_TRY(KSPSetPCSide(ksp, PC_RIGHT));
-  FSI_TRY(PCSetType(pc, PCFIELDSPLIT));
-  FSI_TRY(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
-  FSI_TRY(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER));
-  FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr));
-  // The inner solvers exist only once the split is set up: their defaults go to the
-  // options database, which they read then. The velocity block couples its two
+  // The preconditioner (petsc_schur.hpp) is made at each set-up, and its inner solvers
+  // with it: their defaults go to the options database, which they read then, under
+  // the prefixes of PETSc's field split (kept for PETSC_OPTIONS). The velocity block couples its two
   // components (the symmetric gradient) and holds the penalty's mass: BoomerAMG's
   // strength threshold 0.7 instead of its 2D default 0.25 took GMRES from 215 to 65
   // iterations at h = 0.005 and keeps them at 61-71 from h = 0.02 to 0.0025 (the
@@ -196,25 +192,18 @@ std::string initialise(int& rank, int& ranks) {
   return "";
 }
 
-// The velocity's and the pressure's unknowns as index sets, named "u" and "p" (the
-// option prefixes fluid_fieldsplit_u_, fluid_fieldsplit_p_).
-// This rank's rows of each.
+// The velocity's and the pressure's unknowns as index sets, this rank's rows of each.
 std::string split_fields(Solver& s) {
   const auto& p = s.config.is_pressure;
   if (std::count(p.begin(), p.end(), 1) == 0 || std::count(p.begin(), p.end(), 0) == 0)
-    return "the field split needs velocity and pressure unknowns";
+    return "the Schur preconditioner needs velocity and pressure unknowns";
   if (std::string e = set_layout(s, static_cast<PetscInt>(p.size())); !e.empty()) return e;
   std::vector<PetscInt> index[2];
   for (PetscInt i = s.first; i < s.last; ++i)
     index[p[static_cast<std::size_t>(i)] ? 1 : 0].push_back(i);
-  PC pc;
-  FSI_TRY(KSPGetPC(s.ksp, &pc));
-  const char* names[2] = {"u", "p"};
-  for (int f = 0; f < 2; ++f) {
+  for (int f = 0; f < 2; ++f)
     FSI_TRY(ISCreateGeneral(PETSC_COMM_WORLD, static_cast<PetscInt>(index[f].size()),
                             index[f].data(), PETSC_COPY_VALUES, &s.fields[f]));
-    FSI_TRY(PCFieldSplitSetIS(pc, names[f], s.fields[f]));
-  }
   return "";
 }
 
@@ -341,8 +330,7 @@ std::string schur_preconditioner(Solver& s) {
   if (s.M) FSI_TRY(MatAXPY(s.S, -1.0, s.M, DIFFERENT_NONZERO_PATTERN));
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
-  FSI_TRY(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.S));
-  return "";
+  return set_schur_factorisation(pc, s.A, s.fields[0], s.fields[1], s.S);
 }
 
 // On one rank, the caller's arrays as A's own (PETSc only reads them): no copy of the
@@ -430,7 +418,7 @@ std::string set_operator(void* handle, const PetscCsr& m) {
 std::string set_up(void* handle) {
   auto& s = *static_cast<Solver*>(handle);
   if (!s.A) return "set_up() before set_operator()";
-  if (s.config.iterative && s.M)
+  if (s.config.iterative)
     if (std::string e = schur_preconditioner(s); !e.empty()) return e;
   FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
   FSI_TRY(KSPSetUp(s.ksp));  // the factorisation, or the preconditioner's set-up
