@@ -14,7 +14,7 @@
 // built here from the distributed operator: a rank holds its own rows only, and so
 // not the diagonal of its neighbours' velocity rows that its pressure rows need.
 //
-// The defaults are set on the objects before KSPSetFromOptions, and the split's inner
+// The defaults are set on the objects before KSPSetFromOptions, and the inner
 // solvers' in PETSc's options database unless given there, so that PETSC_OPTIONS can
 // change any of them: under the prefix "fluid_" for the iterative solver (e.g.
 // "-fluid_ksp_monitor", "-fluid_fieldsplit_u_pc_type gamg"), "fluid_direct_" for MUMPS.
@@ -266,8 +266,8 @@ std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& o
 // The iterative solver's next set-up starts from nothing: its Krylov method, split and
 // hierarchies made anew, the last ones freed first. Reused, the split's copies of the
 // blocks and both hierarchies stayed alive while the next S_p and its scratch were
-// built: a run's later passes peaked 0.74 kB a triangle above its first (3 000 against
-// 2 315 MB at 930 681 triangles; docs/performance.md, "The memory a triangle"). The
+// built: a run's later passes peaked 0.72 kB a triangle above its first (2 930 against
+// 2 260 MB at 930 681 triangles; docs/performance.md, "The memory a triangle, continued"). The
 // split's blocks and BoomerAMG's hierarchies are built anew at each set-up either way.
 std::string release_preconditioner(Solver& s) {
   if (!s.config.iterative || !s.set_up_once) return "";

@@ -78,7 +78,7 @@ struct PetscPlugin {
   // The pressure mass matrix M_w on the pressure unknowns, this rank's rows of it
   // (iterative), before set_operator: the Schur preconditioner is then
   // S_p = D − B diag(A)⁻¹ Bᵀ − M_w, built from the operator by PETSc (without it,
-  // PETSc's selfp, the same less M_w).
+  // the same less M_w: PETSc's "selfp").
   std::string (*set_pressure_mass)(void* solver, const PetscCsr& M);
   // x with A x = b, both of the whole size: this rank's rows [first, last) of b are
   // read; x holds the initial guess if `warm` (iterative), the whole solution on return.
