@@ -68,7 +68,6 @@ struct Solver {
   Mat A = nullptr;
   PetscCsr borrowed;  // the caller's arrays A uses in place, if it does (borrowed.borrowed)
   Mat M = nullptr;  // the pressure mass matrix M_w, if given
-  Mat S = nullptr;  // the Schur preconditioning matrix built from A and M
   Vec b = nullptr, x = nullptr;
   Vec all = nullptr;  // x gathered on every rank
   VecScatter to_all = nullptr;
@@ -213,7 +212,6 @@ void destroy(void* handle) {
   KSPDestroy(&s->ksp);
   MatDestroy(&s->A);
   MatDestroy(&s->M);
-  MatDestroy(&s->S);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
   VecDestroy(&s->all);
@@ -234,7 +232,6 @@ std::string make_ksp(Solver& s) {
   FSI_TRY(KSPSetResidualHistory(s.ksp, s.history.data(), static_cast<PetscInt>(s.history.size()),
                                 PETSC_TRUE));
   FSI_TRY(KSPSetFromOptions(s.ksp));
-  if (s.config.iterative) return split_fields(s);
   return "";
 }
 
@@ -242,6 +239,7 @@ void* create(const PetscSolverConfig& config, std::string& error) {
   auto* s = new Solver;
   s->config = config;
   error = make_ksp(*s);
+  if (error.empty() && s->config.iterative) error = split_fields(*s);
   if (error.empty()) return s;
   destroy(s);
   return nullptr;
@@ -263,8 +261,8 @@ std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& o
   return "";
 }
 
-// The iterative solver's next set-up starts from nothing: its Krylov method, split and
-// hierarchies made anew, the last ones freed first. Reused, the split's copies of the
+// The iterative solver's next set-up starts from nothing: its Krylov method and
+// preconditioner (blocks, hierarchies) made anew, the last ones freed first. Reused, the split's copies of the
 // blocks and both hierarchies stayed alive while the next S_p and its scratch were
 // built: a run's later passes peaked 0.72 kB a triangle above its first (2 930 against
 // 2 260 MB at 930 681 triangles; docs/performance.md, "The memory a triangle, continued"). The
@@ -273,9 +271,6 @@ std::string release_preconditioner(Solver& s) {
   if (!s.config.iterative || !s.set_up_once) return "";
   s.set_up_once = false;
   FSI_TRY(KSPDestroy(&s.ksp));
-  FSI_TRY(ISDestroy(&s.fields[0]));
-  FSI_TRY(ISDestroy(&s.fields[1]));
-  FSI_TRY(MatDestroy(&s.S));
   return make_ksp(s);
 }
 
@@ -289,11 +284,12 @@ std::string set_pressure_mass(void* handle, const PetscCsr& m) {
 }
 
 // What schur_preconditioner makes and then destroys, destroyed on every path.
+// S and Bᵀ until the preconditioner takes them.
 struct SchurScratch {
-  Mat up = nullptr, pu = nullptr, pp = nullptr;
+  Mat up = nullptr, pu = nullptr, pp = nullptr, S = nullptr, Bt = nullptr;
   Vec diagonal = nullptr, inverse = nullptr;
   ~SchurScratch() {
-    MatDestroy(&up), MatDestroy(&pu), MatDestroy(&pp);
+    MatDestroy(&up), MatDestroy(&pu), MatDestroy(&pp), MatDestroy(&S), MatDestroy(&Bt);
     VecDestroy(&diagonal), VecDestroy(&inverse);
   }
 };
@@ -310,7 +306,9 @@ std::string schur_preconditioner(Solver& s) {
   SchurScratch x;
   FSI_TRY(MatCreateVecs(s.A, nullptr, &x.diagonal));
   FSI_TRY(MatGetDiagonal(s.A, x.diagonal));
-  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[0], s.fields[1], MAT_INITIAL_MATRIX, &x.up));
+  // Bᵀ, kept for the preconditioner's product, and a copy scaled by diag(A_u)⁻¹.
+  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[0], s.fields[1], MAT_INITIAL_MATRIX, &x.Bt));
+  FSI_TRY(MatDuplicate(x.Bt, MAT_COPY_VALUES, &x.up));
   // Laid out as Bᵀ's rows: this rank's velocity rows.
   FSI_TRY(MatCreateVecs(x.up, nullptr, &x.inverse));
   const PetscScalar* d = nullptr;
@@ -324,13 +322,15 @@ std::string schur_preconditioner(Solver& s) {
   FSI_TRY(MatDiagonalScale(x.up, x.inverse, nullptr));
   FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[0], MAT_INITIAL_MATRIX, &x.pu));
   FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[1], MAT_INITIAL_MATRIX, &x.pp));
-  FSI_TRY(MatDestroy(&s.S));
-  FSI_TRY(MatMatMult(x.pu, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &s.S));
-  FSI_TRY(MatAYPX(s.S, -1.0, x.pp, DIFFERENT_NONZERO_PATTERN));  // S = D − B diag(A_u)⁻¹ Bᵀ
-  if (s.M) FSI_TRY(MatAXPY(s.S, -1.0, s.M, DIFFERENT_NONZERO_PATTERN));
+  FSI_TRY(MatMatMult(x.pu, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &x.S));
+  FSI_TRY(MatAYPX(x.S, -1.0, x.pp, DIFFERENT_NONZERO_PATTERN));  // S = D − B diag(A_u)⁻¹ Bᵀ
+  if (s.M) FSI_TRY(MatAXPY(x.S, -1.0, s.M, DIFFERENT_NONZERO_PATTERN));
+  FSI_TRY(MatDestroy(&x.up));
+  FSI_TRY(MatDestroy(&x.pu));
+  FSI_TRY(MatDestroy(&x.pp));
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
-  return set_schur_factorisation(pc, s.A, s.fields[0], s.fields[1], s.S);
+  return set_schur_factorisation(pc, s.A, s.fields[0], s.fields[1], x.S, x.Bt);
 }
 
 // On one rank, the caller's arrays as A's own (PETSc only reads them): no copy of the
@@ -374,8 +374,6 @@ std::string first_operator(Solver& s, const PetscCsr& m) {
 
 // This rank's rows' values, on the pattern fixed by the first call.
 std::string update_values(Solver& s, const PetscCsr& m) {
-  if (m.n != s.n)
-    return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
   if (m.first != s.first || m.last != s.last)
     return "the operator's rows given are not this rank's";
   for (PetscInt r = s.first; r < s.last; ++r) {

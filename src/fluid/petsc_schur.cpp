@@ -93,19 +93,20 @@ std::string scatters(Factorisation& f, Mat K, IS u, IS p) {
 
 }  // namespace
 
-std::string set_schur_factorisation(PC pc, Mat K, IS u, IS p, Mat& S) {
+std::string set_schur_factorisation(PC pc, Mat K, IS u, IS p, Mat& S, Mat& Bt) {
   FSI_TRY(PCSetType(pc, PCSHELL));
   auto* f = new Factorisation;
   FSI_TRY(PCShellSetContext(pc, f));
   FSI_TRY(PCShellSetDestroy(pc, destroy_factorisation));  // f freed with pc from here on
   FSI_TRY(PCShellSetApply(pc, apply));
   FSI_TRY(PCShellSetName(pc, "upper Schur factorisation [A_u B^T; 0 S], BoomerAMG on A_u and S_p"));
+  f->Bt = Bt;
+  Bt = nullptr;
   // S's hierarchy first, A_u's next: PETSc's copy of each freed before the next is made.
   if (std::string e = inner("fluid_fieldsplit_p_", S, f->ksp_p); !e.empty()) return e;
   Mat A_u = nullptr;
   FSI_TRY(MatCreateSubMatrix(K, u, u, MAT_INITIAL_MATRIX, &A_u));
   if (std::string e = inner("fluid_fieldsplit_u_", A_u, f->ksp_u); !e.empty()) return e;
-  FSI_TRY(MatCreateSubMatrix(K, u, p, MAT_INITIAL_MATRIX, &f->Bt));
   return scatters(*f, K, u, p);
 }
 

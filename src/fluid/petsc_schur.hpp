@@ -25,8 +25,8 @@ namespace fsi {
 
 // pc becomes P⁻¹ for the operator K split into the index sets u and p (this rank's rows
 // of each), with the Schur complement's preconditioning matrix S (taken: freed once
-// hypre holds it). Its blocks and both hierarchies are built here; they are freed with
-// pc. "" or the error.
-std::string set_schur_factorisation(PC pc, Mat K, IS u, IS p, Mat& S);
+// hypre holds it) and K's (u, p) block Bt (taken). A_u and both hierarchies are built
+// here; they are freed with pc. "" or the error.
+std::string set_schur_factorisation(PC pc, Mat K, IS u, IS p, Mat& S, Mat& Bt);
 
 }  // namespace fsi
