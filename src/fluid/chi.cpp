@@ -1,9 +1,6 @@
 #include "fluid/chi.hpp"
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/point.hpp>
-#include <boost/geometry/index/rtree.hpp>
+#include <algorithm>
 #include <stdexcept>
 
 #include "fem/p1.hpp"
@@ -11,31 +8,11 @@
 
 namespace fsi {
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BgPoint = bg::model::point<double, 2, bg::cs::cartesian>;
-using BgBox = bg::model::box<BgPoint>;
-
-struct ChiComputer::BarycentreIndex {
-  bgi::rtree<std::pair<BgPoint, int>, bgi::quadratic<16>> tree;
-};
-
 ChiComputer::ChiComputer(const Mesh& fluid_mesh, const PointLocator& fluid_locator, std::string rule)
-    : fluid_(fluid_mesh), locator_(fluid_locator), rule_(std::move(rule)),
-      barycentres_(std::make_unique<BarycentreIndex>()) {
+    : fluid_(fluid_mesh), locator_(fluid_locator), rule_(std::move(rule)) {
   if (rule_ != "barycentre" && rule_ != "area-fraction")
     throw std::invalid_argument("unknown chi rule '" + rule_ + "'");
-  std::vector<std::pair<BgPoint, int>> points;
-  points.reserve(fluid_mesh.triangles.size());
-  for (int t = 0; t < fluid_mesh.num_triangles(); ++t) {
-    const auto& tri = fluid_mesh.triangles[t];
-    const Point g = (fluid_mesh.vertices[tri[0]] + fluid_mesh.vertices[tri[1]] + fluid_mesh.vertices[tri[2]]) / 3.0;
-    points.emplace_back(BgPoint(g.x(), g.y()), t);
-  }
-  barycentres_->tree = decltype(barycentres_->tree)(points.begin(), points.end());
 }
-
-ChiComputer::~ChiComputer() = default;
 
 Eigen::VectorXd ChiComputer::operator()(const Mesh& s) const {
   return rule_ == "barycentre" ? barycentre_rule(s) : area_fraction_rule(s);
@@ -52,18 +29,22 @@ void bounding_box(const Mesh& m, int t, Point& lo, Point& hi) {
 }
 }  // namespace
 
-// For each structure triangle, the fluid barycentres in its box, tested exactly.
+// For each structure triangle, the barycentres of the fluid triangles whose boxes meet
+// its box (the locator's index: a barycentre in the box has its triangle's box meeting
+// it), tested exactly. An index of the barycentres of its own would cost 46 bytes a
+// fluid triangle (issue 32's memory budget) for fewer candidates near the box's edges.
 Eigen::VectorXd ChiComputer::barycentre_rule(const Mesh& s) const {
   Eigen::VectorXd chi = Eigen::VectorXd::Zero(fluid_.num_triangles());
   for (int t = 0; t < s.num_triangles(); ++t) {
     Point lo, hi;
     bounding_box(s, t, lo, hi);
     const P1Triangle T(s, t);
-    const BgBox box(BgPoint(lo.x(), lo.y()), BgPoint(hi.x(), hi.y()));
-    for (auto it = barycentres_->tree.qbegin(bgi::intersects(box)); it != barycentres_->tree.qend(); ++it) {
-      const Point g(bg::get<0>(it->first), bg::get<1>(it->first));
+    for (int f : locator_.triangles_in_box(lo, hi)) {
+      const auto& tri = fluid_.triangles[f];
+      const Point g = (fluid_.vertices[tri[0]] + fluid_.vertices[tri[1]] + fluid_.vertices[tri[2]]) / 3.0;
+      if (g.x() < lo.x() || g.x() > hi.x() || g.y() < lo.y() || g.y() > hi.y()) continue;
       // Closed triangles: a barycentre on a shared edge counts once (χ is 0/1).
-      if (T.barycentric(g).minCoeff() >= -1e-14) chi[it->second] = 1.0;
+      if (T.barycentric(g).minCoeff() >= -1e-14) chi[f] = 1.0;
     }
   }
   return chi;

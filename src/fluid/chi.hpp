@@ -6,7 +6,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
 #include <string>
 
 #include "mesh/clipping.hpp"  // triangle_intersection_area
@@ -18,7 +17,6 @@ namespace fsi {
 class ChiComputer {
  public:
   ChiComputer(const Mesh& fluid_mesh, const PointLocator& fluid_locator, std::string rule);
-  ~ChiComputer();
   // χ on the fluid triangles for the structure occupying `deformed_structure`.
   Eigen::VectorXd operator()(const Mesh& deformed_structure) const;
   const std::string& rule() const { return rule_; }
@@ -27,11 +25,9 @@ class ChiComputer {
   Eigen::VectorXd barycentre_rule(const Mesh& s) const;
   Eigen::VectorXd area_fraction_rule(const Mesh& s) const;
 
-  struct BarycentreIndex;
   const Mesh& fluid_;
   const PointLocator& locator_;
   std::string rule_;
-  std::unique_ptr<BarycentreIndex> barycentres_;
 };
 
 }  // namespace fsi

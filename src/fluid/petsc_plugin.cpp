@@ -22,6 +22,8 @@
 
 #include <petscksp.h>
 
+#include "fluid/petsc_block_operator.hpp"
+#include "fluid/petsc_blocks.hpp"
 #include "fluid/petsc_schur.hpp"
 #include "fluid/petsc_try.hpp"
 
@@ -65,10 +67,12 @@ namespace {
 struct Solver {
   PetscSolverConfig config;
   PetscInt n = -1, first = 0, last = 0, p_first = 0, p_last = 0;
-  Mat A = nullptr;
+  Mat A = nullptr;     // the operator as given (iterative: until its blocks are taken)
+  KBlocks blocks;      // iterative, between set_up and finish_set_up (petsc_blocks.hpp)
+  Mat op = nullptr;    // iterative: the operator by its blocks (petsc_block_operator.hpp)
   PetscCsr borrowed;  // the caller's arrays A uses in place, if it does (borrowed.borrowed)
   Mat M = nullptr;  // the pressure mass matrix M_w, if given
-  Vec b = nullptr, x = nullptr;
+  Vec b = nullptr, x = nullptr, r = nullptr;  // r: b − K x, the true residual
   Vec all = nullptr;  // x gathered on every rank
   VecScatter to_all = nullptr;
   KSP ksp = nullptr;
@@ -211,9 +215,12 @@ void destroy(void* handle) {
   if (!s) return;
   KSPDestroy(&s->ksp);
   MatDestroy(&s->A);
+  s->blocks.free();
+  MatDestroy(&s->op);
   MatDestroy(&s->M);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
+  VecDestroy(&s->r);
   VecDestroy(&s->all);
   VecScatterDestroy(&s->to_all);
   ISDestroy(&s->fields[0]);
@@ -268,7 +275,10 @@ std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& o
 // 2 260 MB at 930 681 triangles; docs/performance.md, "The memory a triangle, continued"). The
 // split's blocks and BoomerAMG's hierarchies are built anew at each set-up either way.
 std::string release_preconditioner(Solver& s) {
-  if (!s.config.iterative || !s.set_up_once) return "";
+  if (!s.config.iterative) return "";
+  s.blocks.free();
+  FSI_TRY(MatDestroy(&s.op));
+  if (!s.set_up_once) return "";
   s.set_up_once = false;
   FSI_TRY(KSPDestroy(&s.ksp));
   return make_ksp(s);
@@ -283,54 +293,40 @@ std::string set_pressure_mass(void* handle, const PetscCsr& m) {
   return matrix_from(m, s.p_first, s.p_last, s.M);
 }
 
-// What schur_preconditioner makes and then destroys, destroyed on every path.
-// S and Bᵀ until the preconditioner takes them.
-struct SchurScratch {
-  Mat up = nullptr, pu = nullptr, pp = nullptr, S = nullptr, Bt = nullptr;
-  Vec diagonal = nullptr, inverse = nullptr;
-  ~SchurScratch() {
-    MatDestroy(&up), MatDestroy(&pu), MatDestroy(&pp), MatDestroy(&S), MatDestroy(&Bt);
-    VecDestroy(&diagonal), VecDestroy(&inverse);
-  }
-};
+// K split by the fields into its blocks, and K freed: on one rank the caller's arrays
+// are no longer read (the caller frees them before finish_set_up), on several PETSc's
+// copy of the rows is gone. B is Bᵀ's transpose where K is its own transpose, which is
+// known where K is borrowed (checked by PetscSolver); a block of its own otherwise.
+std::string take_blocks(Solver& s) {
+  if (std::string e = take_blocks(s.A, s.fields[0], s.fields[1], s.borrowed.borrowed, s.blocks); !e.empty())
+    return e;
+  FSI_TRY(MatDestroy(&s.A));
+  s.borrowed = {};
+  return "";
+}
 
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w for K = [A_u Bᵀ; B D] split by the fields (D = −C,
-// so S_p, like the Schur complement, is negative definite): PETSc's "selfp", which
-// follows the penalty (diag(A_u) holds (1/ε)χM), less the fluid's pressure mass matrix
-// M_w (w = (1 − χ)/μ), the Stokes Schur complement's spectral equivalent where χ = 0,
-// which selfp underestimates on smooth pressures by ~h² (measured: 466 GMRES
-// iterations at h = 0.005 on the §7.2 box with selfp alone, 61–71 with M_w from
-// h = 0.02 to 0.0025; docs/performance.md "PETSc"). Products of distributed blocks,
-// so that a rank needs no row of another's.
-std::string schur_preconditioner(Solver& s) {
-  SchurScratch x;
-  FSI_TRY(MatCreateVecs(s.A, nullptr, &x.diagonal));
-  FSI_TRY(MatGetDiagonal(s.A, x.diagonal));
-  // Bᵀ, kept for the preconditioner's product, and a copy scaled by diag(A_u)⁻¹.
-  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[0], s.fields[1], MAT_INITIAL_MATRIX, &x.Bt));
-  FSI_TRY(MatDuplicate(x.Bt, MAT_COPY_VALUES, &x.up));
-  // Laid out as Bᵀ's rows: this rank's velocity rows.
-  FSI_TRY(MatCreateVecs(x.up, nullptr, &x.inverse));
-  const PetscScalar* d = nullptr;
-  PetscScalar* inverse = nullptr;
-  FSI_TRY(VecGetArrayRead(x.diagonal, &d));
-  FSI_TRY(VecGetArray(x.inverse, &inverse));
-  for (PetscInt i = s.first, k = 0; i < s.last; ++i)
-    if (!s.config.is_pressure[static_cast<std::size_t>(i)]) inverse[k++] = 1.0 / d[i - s.first];
-  FSI_TRY(VecRestoreArray(x.inverse, &inverse));
-  FSI_TRY(VecRestoreArrayRead(x.diagonal, &d));
-  FSI_TRY(MatDiagonalScale(x.up, x.inverse, nullptr));
-  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[0], MAT_INITIAL_MATRIX, &x.pu));
-  FSI_TRY(MatCreateSubMatrix(s.A, s.fields[1], s.fields[1], MAT_INITIAL_MATRIX, &x.pp));
-  FSI_TRY(MatMatMult(x.pu, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &x.S));
-  FSI_TRY(MatAYPX(x.S, -1.0, x.pp, DIFFERENT_NONZERO_PATTERN));  // S = D − B diag(A_u)⁻¹ Bᵀ
-  if (s.M) FSI_TRY(MatAXPY(x.S, -1.0, s.M, DIFFERENT_NONZERO_PATTERN));
-  FSI_TRY(MatDestroy(&x.up));
-  FSI_TRY(MatDestroy(&x.pu));
-  FSI_TRY(MatDestroy(&x.pp));
-  PC pc;
-  FSI_TRY(KSPGetPC(s.ksp, &pc));
-  return set_schur_factorisation(pc, s.A, s.fields[0], s.fields[1], x.S, x.Bt);
+// so S_p, like the Schur complement, is negative definite; petsc_blocks.hpp's
+// schur_matrix): PETSc's "selfp", which follows the penalty (diag(A_u) holds (1/ε)χM),
+// less the fluid's pressure mass matrix M_w (w = (1 − χ)/μ), the Stokes Schur
+// complement's spectral equivalent where χ = 0, which selfp underestimates on smooth
+// pressures by ~h² (measured: 466 GMRES iterations at h = 0.005 on the §7.2 box with
+// selfp alone, 61–71 with M_w from h = 0.02 to 0.0025; docs/performance.md "PETSc").
+// The rest of the iterative set-up, from the blocks taken: S_p, the preconditioner's
+// hierarchies, and the operator by its blocks, which the Krylov method multiplies by.
+std::string finish_iterative(Solver& s) {
+  KBlocks& k = s.blocks;
+  Mat S = nullptr;
+  PC pc = nullptr;
+  std::string e = schur_matrix(k, s.M, S);
+  if (e.empty() && KSPGetPC(s.ksp, &pc)) e = "PETSc: KSPGetPC failed";
+  if (e.empty()) e = set_schur_factorisation(pc, k.A_u, S, k.Bt, s.fields[0], s.fields[1], s.x);
+  MatDestroy(&S);  // taken, unless an error came first
+  if (e.empty()) e = make_block_operator(k, s.fields[0], s.fields[1], s.x, s.op);
+  k.free();  // the preconditioner and the operator hold them
+  if (!e.empty()) return e;
+  FSI_TRY(KSPSetOperators(s.ksp, s.op, s.op));
+  return "";
 }
 
 // On one rank, the caller's arrays as A's own (PETSc only reads them): no copy of the
@@ -400,10 +396,10 @@ bool other_arrays(const Solver& s, const PetscCsr& m) {
 std::string set_operator(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
   if (std::string e = release_preconditioner(s); !e.empty()) return e;
-  if (!s.A) return first_operator(s, m);
+  if (!s.x) return first_operator(s, m);
   if (m.n != s.n)
     return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
-  if (other_arrays(s, m)) {
+  if (!s.A || other_arrays(s, m)) {  // none: the iterative set-up took its blocks and freed it
     FSI_TRY(MatDestroy(&s.A));
     return make_operator(s, m);
   }
@@ -413,13 +409,9 @@ std::string set_operator(void* handle, const PetscCsr& m) {
   return "";
 }
 
-std::string set_up(void* handle) {
-  auto& s = *static_cast<Solver*>(handle);
-  if (!s.A) return "set_up() before set_operator()";
-  if (s.config.iterative)
-    if (std::string e = schur_preconditioner(s); !e.empty()) return e;
-  FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
-  FSI_TRY(KSPSetUp(s.ksp));  // the factorisation, or the preconditioner's set-up
+// The KSP's set-up (the factorisation, or the preconditioner's) and its check.
+std::string set_up_ksp(Solver& s) {
+  FSI_TRY(KSPSetUp(s.ksp));
   PC pc;
   FSI_TRY(KSPGetPC(s.ksp, &pc));
   PCFailedReason failed = PC_NOERROR;
@@ -432,10 +424,41 @@ std::string set_up(void* handle) {
   return "";
 }
 
+// Direct: the factorisation. Iterative: K's blocks taken and K freed; finish_set_up
+// does the rest (or the next solve, if the caller does not).
+std::string set_up(void* handle) {
+  auto& s = *static_cast<Solver*>(handle);
+  if (!s.A) return "set_up() before set_operator()";
+  if (s.config.iterative) return take_blocks(s);
+  FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
+  return set_up_ksp(s);
+}
+
+std::string finish_set_up(void* handle) {
+  auto& s = *static_cast<Solver*>(handle);
+  if (!s.blocks.taken()) return "";  // direct, or done
+  if (std::string e = finish_iterative(s); !e.empty()) return e;
+  return set_up_ksp(s);
+}
+
+// ‖b − K x‖ / ‖b‖ for the solution in s.x (one product, with the operator the Krylov
+// method used): the solve's accuracy, which the caller checks.
+std::string true_residual(Solver& s, PetscReal bnorm, double& residual) {
+  if (!s.r) FSI_TRY(VecDuplicate(s.b, &s.r));
+  FSI_TRY(MatMult(s.config.iterative ? s.op : s.A, s.x, s.r));
+  FSI_TRY(VecAYPX(s.r, -1.0, s.b));
+  PetscReal rnorm = 0;
+  FSI_TRY(VecNorm(s.r, NORM_2, &rnorm));
+  residual = bnorm > 0 ? rnorm / bnorm : rnorm;
+  return "";
+}
+
 // This rank's part of b and of the first iterate in; the whole solution out, on
 // every rank.
 std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolveReport& report) {
   auto& s = *static_cast<Solver*>(handle);
+  if (std::string e = finish_set_up(handle); !e.empty()) return e;
+  if (!s.set_up_once) return "solve() before set_up()";
   PetscScalar* v = nullptr;
   FSI_TRY(VecGetArray(s.b, &v));
   std::copy(b + s.first, b + s.last, v);
@@ -456,7 +479,7 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   FSI_TRY(KSPGetResidualHistory(s.ksp, &h, &count));
   report.history.clear();
   for (PetscInt k = 0; k < count; ++k) report.history.push_back(bnorm > 0 ? h[k] / bnorm : h[k]);
-  report.residual = report.history.empty() ? 0 : report.history.back();
+  if (std::string e = true_residual(s, bnorm, report.residual); !e.empty()) return e;
   if (reason < 0) return "PETSc: the solve did not converge (" + report.reason + ")";
   FSI_TRY(VecScatterBegin(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
   FSI_TRY(VecScatterEnd(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
@@ -468,9 +491,10 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
 
 std::string release(void* handle) { return release_preconditioner(*static_cast<Solver*>(handle)); }
 
-const PetscPlugin kPlugin = {kPetscPluginVersion, initialise, row_block,    sum_over_ranks,
-                             largest_over_ranks,  create,     set_operator, set_up,
-                             set_pressure_mass,   solve,      destroy,      release};
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,    row_block,         sum_over_ranks,
+                             largest_over_ranks,  create,        set_operator,      set_up,
+                             finish_set_up,       set_pressure_mass, solve,         destroy,
+                             release};
 
 }  // namespace
 }  // namespace fsi

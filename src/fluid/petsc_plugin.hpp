@@ -47,7 +47,7 @@ struct PetscSolverConfig {
 
 struct PetscSolveReport {
   int iterations = 0;
-  double residual = 0;            // ‖b − A x‖ / ‖b‖ at the end (iterative)
+  double residual = 0;            // ‖b − A x‖ / ‖b‖ at the end, computed anew
   std::vector<double> history;    // the residual norm of every iteration, relative
   std::string reason;             // PETSc's converged or diverged reason
 };
@@ -71,10 +71,15 @@ struct PetscPlugin {
   void* (*create)(const PetscSolverConfig& config, std::string& error);
   // The operator's values (copied unless borrowed): its first call fixes the pattern.
   std::string (*set_operator)(void* solver, const PetscCsr& A);
-  // After set_operator: the factorisation (direct), or the Schur preconditioner's
-  // matrix and the preconditioner's set-up (iterative). Apart from set_operator so that
-  // the caller can free its rows first: the set-up is the memory's peak.
+  // After set_operator: the factorisation (direct); or (iterative) the operator's
+  // blocks taken (petsc_block_operator.hpp), after which its arrays are not read: the
+  // caller may free them before finish_set_up. Apart from set_operator so that the
+  // caller can free its rows first: the set-up is the memory's peak.
   std::string (*set_up)(void* solver);
+  // After set_up (iterative): the Schur preconditioner's matrix and the
+  // preconditioner's set-up, from the blocks taken; the next solve does it if not
+  // called. Nothing for MUMPS.
+  std::string (*finish_set_up)(void* solver);
   // The pressure mass matrix M_w on the pressure unknowns, this rank's rows of it
   // (iterative), before set_operator: the Schur preconditioner is then
   // S_p = D − B diag(A)⁻¹ Bᵀ − M_w, built from the operator by PETSc (without it,
@@ -89,6 +94,6 @@ struct PetscPlugin {
   // next set_pressure_mass or set_operator does it too. Nothing for MUMPS.
   std::string (*release)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 7;
+inline constexpr int kPetscPluginVersion = 8;
 
 }  // namespace fsi

@@ -24,9 +24,11 @@
 namespace fsi {
 
 // pc becomes P⁻¹ for the operator K split into the index sets u and p (this rank's rows
-// of each), with the Schur complement's preconditioning matrix S (taken: freed once
-// hypre holds it) and K's (u, p) block Bt (taken). A_u and both hierarchies are built
-// here; they are freed with pc. "" or the error.
-std::string set_schur_factorisation(PC pc, Mat K, IS u, IS p, Mat& S, Mat& Bt);
+// of each, in the layout of the vector `whole`), with K's velocity block A_u (taken; on
+// return the matrix the inner solver holds, hypre's copy when hypre's: the caller's
+// reference, which the block operator shares), the Schur complement's preconditioning
+// matrix S (taken and freed once hypre holds it) and K's (u, p) block Bt (referenced).
+// Both hierarchies are built here; they are freed with pc. "" or the error.
+std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, IS u, IS p, Vec whole);
 
 }  // namespace fsi

@@ -258,7 +258,8 @@ void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
   }
   // On one rank a K that is its own transpose bit for bit (StokesAssembler::add_element)
   // has its columns for rows: PETSc uses its arrays in place. They stay unchanged until
-  // the solve, as SparseDirectSolver's callers keep A (UMFPACK's refinement reads it too).
+  // the solve (petsc-mumps), as SparseDirectSolver's callers keep A, or until set_up
+  // returns (petsc-iterative, which takes K's blocks then: detaches_from_operator()).
   if (ranks_ == 1 && symmetric_ && is_own_transpose(A)) {
     const PetscCsr K{static_cast<int>(A.rows()), 0, static_cast<int>(A.rows()), A.outerIndexPtr(),
                      A.innerIndexPtr(), A.valuePtr(), true};
@@ -277,6 +278,11 @@ void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
     throw SolverFailure(name_ + ": " + error);
 }
 
+void PetscSolver::finish_factorization_values() {
+  if (const std::string error = plugin_->finish_set_up(solver_); !error.empty())
+    throw SolverFailure(name_ + ": " + error);
+}
+
 void PetscSolver::release_factorization() {
   if (!solver_) return;
   if (const std::string error = plugin_->release(solver_); !error.empty())
@@ -288,8 +294,10 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   Eigen::VectorXd x = warm ? last_solution_ : Eigen::VectorXd::Zero(rhs.size());
   const Eigen::VectorXd b = order_ * rhs;
   PetscSolveReport report;
+  last_residual_ = std::numeric_limits<double>::quiet_NaN();
   const std::string error = plugin_->solve(solver_, b.data(), x.data(), warm, report);
   if (iterative_) last_iterations_ = report.iterations;
+  last_residual_ = report.residual;
   if (!error.empty()) {
     std::string history;
     const std::size_t n = report.history.size(), shown = std::min<std::size_t>(n, 8);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,10 @@ class PetscSolver final : public SparseDirectSolver {
   double norm_over_ranks(const Eigen::VectorXd& v) const override;
   bool on_every_rank(bool ok) const override;
   double residual_tolerance() const override;
+  // The iterative solver holds K's blocks after factorize() (petsc_block_operator.hpp):
+  // the caller may free K before finish_factorization().
+  bool detaches_from_operator() const override { return iterative_; }
+  double last_residual() const override { return last_residual_; }
 
  protected:
   // On several ranks, the unknowns renumbered first (order_).
@@ -45,6 +50,7 @@ class PetscSolver final : public SparseDirectSolver {
   void factorize_values(const Eigen::SparseMatrix<double>& A) override;
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) override;
   void release_factorization() override;
+  void finish_factorization_values() override;
 
  private:
   void require_enough_unknowns(Eigen::Index n) const;
@@ -68,6 +74,7 @@ class PetscSolver final : public SparseDirectSolver {
   bool symmetric_ = false;
   Eigen::SparseMatrix<double> pressure_mass_;
   Eigen::VectorXd last_solution_;  // in order_: the next solve's first iterate
+  double last_residual_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace fsi

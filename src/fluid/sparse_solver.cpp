@@ -98,6 +98,10 @@ Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& rhs) {
   return solve_factorized(rhs);
 }
 
+void SparseDirectSolver::finish_factorization() {
+  if (factorized_) finish_factorization_values();
+}
+
 void SparseDirectSolver::release() {
   if (!factorized_) return;
   factorized_ = false;

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -63,6 +64,18 @@ class SparseDirectSolver {
   // and the next rebuilds anyway (PETSc's iterative set-up: petsc_solver.hpp), so that
   // the two never live together; solve() then needs a factorize() first.
   void release();
+  // Whether factorize() leaves the solver holding what it needs of A (petsc-iterative:
+  // A's blocks, petsc_block_operator.hpp), so that the caller may free A before
+  // finish_factorization(), the rest of the set-up and the memory's peak; the solve's
+  // accuracy is then last_residual(), computed with those blocks. The others read A
+  // until the solve (UMFPACK's refinement too), and the caller computes the residual.
+  virtual bool detaches_from_operator() const { return false; }
+  // After factorize(), within the factorisation's time: the rest of the set-up of a
+  // solver that detaches_from_operator() (the next solve() does it if not called).
+  void finish_factorization();
+  // ‖rhs − A x‖ / ‖rhs‖ of the last solve() of a solver that detaches_from_operator(),
+  // computed anew with the operator it holds; NaN for the others.
+  virtual double last_residual() const { return std::numeric_limits<double>::quiet_NaN(); }
   virtual std::string name() const = 0;
   virtual FactorStatistics statistics() const { return {}; }
   // Whether it factors symmetric matrices only (it reads one triangle, or pivots
@@ -109,6 +122,7 @@ class SparseDirectSolver {
   virtual void factorize_values(const Eigen::SparseMatrix<double>& A) = 0;
   virtual Eigen::VectorXd solve_factorized(const Eigen::VectorXd& rhs) = 0;
   virtual void release_factorization() {}
+  virtual void finish_factorization_values() {}
 
  protected:
   int last_iterations_ = -1;  // set by an iterative solve_factorized

@@ -155,6 +155,17 @@ void StokesAssembler::share_rows(std::vector<char> here) {
   assembled_ = false;
 }
 
+// Swapped with empty ones: an assignment would keep the capacity.
+void StokesAssembler::release_offsets() {
+  std::vector<std::uint16_t>().swap(slot_);
+  assembled_ = false;  // an update needs them
+}
+
+void StokesAssembler::release_matrix() {
+  release_offsets();
+  Eigen::SparseMatrix<double>().swap(K_);
+}
+
 int StokesAssembler::triangles_here() const {
   return row_here_.empty() ? mesh_.num_triangles() : static_cast<int>(triangles_here_.size());
 }
@@ -165,11 +176,21 @@ const std::uint16_t* StokesAssembler::slots(int t) const {
 }
 
 void StokesAssembler::set_body_force(const VectorField& f) {
-  const TriangleRule rule = triangle_rule(6);  // bubble (degree 3) × smooth f
-  loads_.clear();
-  loads_.reserve(static_cast<std::size_t>(mesh_.num_triangles()));
-  for (int t = 0; t < mesh_.num_triangles(); ++t) loads_.push_back(element_load(geometry(t), f, rule));
+  f_ = f;
+  load_rule_ = triangle_rule(6);  // bubble (degree 3) × smooth f
+  std::vector<ElementLoad>().swap(loads_);
+  if (keep_loads_) {
+    loads_.reserve(static_cast<std::size_t>(mesh_.num_triangles()));
+    for (int t = 0; t < mesh_.num_triangles(); ++t) loads_.push_back(element_load(geometry(t), f_, load_rule_));
+  }
   assembled_ = false;  // K is unchanged, but rhs_ holds the old loads
+}
+
+void StokesAssembler::keep_element_loads(bool keep) {
+  if (keep == keep_loads_) return;
+  keep_loads_ = keep;
+  if (keep) set_body_force(f_);
+  else std::vector<ElementLoad>().swap(loads_);
 }
 
 MiniLocal StokesAssembler::local(int t, double kappa) const {
@@ -180,8 +201,8 @@ MiniLocal StokesAssembler::local(int t, double kappa) const {
 }
 
 ElementLoad StokesAssembler::load(int t) const {
-  if (terms_.empty()) return loads_[t];
-  ElementLoad load = loads_[t];
+  ElementLoad load = keep_loads_ ? loads_[t] : element_load(geometry(t), f_, load_rule_);
+  if (terms_.empty()) return load;
   const P1Triangle T = geometry(t);
   for (const auto& term : terms_) term->add_load(t, T, load);
   return load;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "fem/integration.hpp"  // TriangleRule
 #include "fem/vector_p1.hpp"  // VectorField
 #include "fluid/mini_element.hpp"
 #include "fluid/region_schur.hpp"
@@ -72,6 +73,10 @@ class StokesAssembler {
   ViscousForm viscous_form() const { return form_; }
   // A new body force f (its element loads); the next assemble() assembles everything.
   void set_body_force(const VectorField& f);
+  // Whether the element loads are kept (the default) or computed when needed, the
+  // same values a few hundred flops later (a solver that frees K: WholeSolve; 96 bytes
+  // a triangle, issue 32's memory budget).
+  void keep_element_loads(bool keep);
   // New boundary data on the same labels: the prescribed velocities' values and the
   // tractions (an inflow or a load that changes in time, SPEC §12); the next assemble()
   // assembles everything. std::invalid_argument if another set of dofs is prescribed.
@@ -100,6 +105,12 @@ class StokesAssembler {
   // The next assemble() assembles every triangle (a new run: its numbers must not
   // depend on the round-off of the last run's updates).
   void forget_assembly() { assembled_ = false; }
+  // For a solver that holds its own blocks of K (SparseDirectSolver::
+  // detaches_from_operator): K's assembly offsets freed once K is assembled (0.16 kB a
+  // triangle), then K (0.38 kB) once the solver holds its blocks. matrix() is then
+  // empty, and the next assemble() builds the pattern anew and assembles every triangle.
+  void release_offsets();
+  void release_matrix();
   // From now on K and rhs hold only the rows of the unknowns k with here[k] (one MPI
   // rank's share, SparseDirectSolver::rows_here), the other rows empty and zero: only
   // the triangles that touch one of them are visited, and K stores their pattern
@@ -162,7 +173,10 @@ class StokesAssembler {
   const Mesh& mesh_;
   double mu_;
   ViscousForm form_ = ViscousForm::symmetric;
-  std::vector<ElementLoad> loads_;
+  VectorField f_;                      // the body force
+  TriangleRule load_rule_;             // its elements' rule
+  bool keep_loads_ = true;
+  std::vector<ElementLoad> loads_;     // empty unless keep_loads_
   std::vector<std::shared_ptr<const ElementTerm>> terms_;  // beyond Stokes (add_term)
   bool symmetric_ = true;
   Eigen::VectorXd z_fixed_;            // prescribed values of all 3nv dofs (0 where free)

@@ -13,6 +13,8 @@ WholeSolve::WholeSolve(StokesAssembler& assembler, const std::string& solver, Fl
 // the assembler then assembles only this rank's rows.
 void WholeSolve::prepare() {
   if (prepared_) return;
+  // A solver that frees K is chosen for memory: the element loads computed when needed.
+  if (solver_->detaches_from_operator()) assembler_.keep_element_loads(false);
   solver_->describe_system(assembler_.pressure_unknowns(), assembler_.symmetric());
   if (solver_->wants_locality_order()) {  // refused (too few unknowns a rank): not prepared
     solver_->set_locality_order(assembler_.curve_rank());
@@ -25,9 +27,13 @@ void WholeSolve::prepare() {
 // run: the pattern never changes), solves.
 void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles) {
   prepare();
+  // The last set-up freed before this pass's matrices are built (K too, for a solver
+  // that freed it: detaches_from_operator); the factorisation rebuilds it anyway.
+  solver_->release();
   {
     const Stopwatch clock;
     assembler_.assemble(chi, eps);
+    if (solver_->detaches_from_operator()) assembler_.release_offsets();  // K is built anew each pass
     timing_.assembly += clock.elapsed();
   }
   const Eigen::SparseMatrix<double>& K = assembler_.matrix();
@@ -40,12 +46,16 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
       timing_.analysis += clock.elapsed();
       ++timing_.analyses;
     }
-    solver_->release();  // the last set-up freed before the pressure mass matrix is built
     if (solver_->wants_pressure_mass()) {
       const Eigen::VectorXd weight = (1.0 - chi.array()) / assembler_.mu();  // the fluid's part: χ = 0
       solver_->set_pressure_mass(assembler_.pressure_mass(weight));
     }
     solver_->factorize(K);
+    // K freed before the rest of the set-up, the memory's peak, by a solver that holds
+    // its own blocks of it (petsc-iterative; docs/performance.md, "K freed before the
+    // set-up").
+    if (solver_->detaches_from_operator()) assembler_.release_matrix();
+    solver_->finish_factorization();
     timing_.factorization += clock.elapsed();
     ++timing_.factorizations;
   }
@@ -53,13 +63,20 @@ void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles)
   const Eigen::VectorXd x = solve_counting_iterations(*solver_, rhs, timing_.linear_iterations);
   if (!x.allFinite()) throw SolverFailure("the Stokes solve produced a non-finite value");
   // A nearly singular matrix can factorise without a zero pivot and give garbage:
-  // one product with K (~1% of a factorisation) catches it. The direct solvers reach
-  // ~1e-14 here, up to ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
-  const double residual = norm(K * x - rhs), scale = norm(rhs);
+  // one product with K (~1% of a factorisation) catches it; a solver that freed K
+  // computed it with its own blocks. The direct solvers reach ~1e-14 here, up to
+  // ε = 1e-7 (docs/performance.md); 1e-8 leaves a wide margin.
+  const double scale = norm(rhs);
+  const double residual =
+      solver_->detaches_from_operator() ? solver_->last_residual() * scale : norm(K * x - rhs);
   if (!(residual <= solver_->residual_tolerance() * scale))
     throw SolverFailure("the Stokes matrix is singular or too ill-conditioned for " + solver_->name() +
                         ": relative residual " + std::to_string(residual / scale) + " after the solve (" +
                         (solver_->last_iterations() >= 0 ? "iterative" : "direct") + ")");
+  // The set-up of a solver that freed K is rebuilt at each pass: freed now, not at the
+  // next pass, so that what follows the solve (the fields, the structure, the outputs)
+  // does not peak above it.
+  if (solver_->detaches_from_operator()) solver_->release();
   assembler_.fields(x, chi, eps, out_);
   timing_.solve += clock.elapsed();
 }

@@ -1,0 +1,19 @@
+// Inside the PETSc plugin: "petsc-iterative"'s operator K = [A_u Bᵀ; B D] applied by
+// its blocks (a MATSHELL), so that K itself is not needed once its blocks are taken
+// (petsc_blocks.hpp): the caller's arrays (or, on several ranks, PETSc's copy of its
+// rows) are freed before the preconditioner's set-up, the memory's peak. The blocks are
+// those the preconditioner holds anyway (petsc_schur.hpp): A_u (hypre's copy, on which
+// its hierarchy is built), Bᵀ (its product's), and D, the pressure's block, small (a
+// P1 stencil); B is Bᵀ's transpose where K is its own (StokesAssembler makes a
+// symmetric K so bit for bit), a block of its own otherwise.
+#pragma once
+
+#include "fluid/petsc_blocks.hpp"
+
+namespace fsi {
+
+// op becomes the shell x ↦ K x for the blocks k (each referenced, not taken), K's rows
+// split into the index sets u and p of the vector `whole`'s layout. "" or the error.
+std::string make_block_operator(const KBlocks& k, IS u, IS p, Vec whole, Mat& op);
+
+}  // namespace fsi

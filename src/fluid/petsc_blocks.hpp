@@ -1,0 +1,45 @@
+// Inside the PETSc plugin: "petsc-iterative"'s saddle point K = [A_u Bᵀ; B D] by its
+// blocks, split by the fields (velocity u, pressure p; this rank's rows of each). The
+// iterative set-up takes them from K (take_blocks) and then needs K no more: the caller
+// frees K before the rest of the set-up, the memory's peak (docs/performance.md, "K
+// freed before the set-up"). From the blocks come the Schur complement's preconditioning
+// matrix S_p (schur_matrix), the preconditioner (petsc_schur.hpp) and the operator the
+// Krylov method multiplies by (petsc_block_operator.hpp).
+#pragma once
+
+#include <petscmat.h>
+
+#include <string>
+
+namespace fsi {
+
+struct KBlocks {
+  Mat A_u = nullptr, Bt = nullptr, D = nullptr;
+  Mat B = nullptr;  // null where K is its own transpose: Bᵀ's transpose then
+  bool taken() const { return A_u != nullptr; }
+  void free();
+};
+
+// K's blocks (new matrices) for the index sets u and p. own_transpose: K equals Kᵀ bit
+// for bit (checked by the caller), so that B is not taken. "" or the error.
+std::string take_blocks(Mat K, IS u, IS p, bool own_transpose, KBlocks& out);
+
+// S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w (M null: without it), a new matrix: the reasons are
+// petsc_plugin.cpp's (schur preconditioner). "" or the error.
+std::string schur_matrix(const KBlocks& k, Mat M, Mat& S);
+
+// Two vectors a field (a_u, b_u of u's layout, a_p, b_p of p's) and the scatters between
+// the whole vector and each field's: the work space of the operator by blocks and of
+// the preconditioner.
+struct FieldVectors {
+  Vec a_u = nullptr, a_p = nullptr, b_u = nullptr, b_p = nullptr;
+  VecScatter to_u = nullptr, to_p = nullptr;
+  // The layouts from Bᵀ (its rows u, its columns p) and the whole vector's.
+  std::string make(Mat Bt, Vec whole, IS u, IS p);
+  // whole → (a_u, a_p), and (u, p) → whole.
+  PetscErrorCode split(Vec whole);
+  PetscErrorCode join(Vec u, Vec p, Vec whole);
+  void free();
+};
+
+}  // namespace fsi
