@@ -10,20 +10,17 @@
 // S_p = −C − B diag(A)⁻¹ Bᵀ (PETSc's "selfp"), which follows the
 // penalty (where χ = 1, diag(A) ~ M/ε and S ~ ε B M⁻¹ Bᵀ, where a pressure mass
 // matrix would be off by 1/ε), less the fluid's weighted pressure mass matrix when
-// the caller gives it (set_pressure_mass; schur_preconditioner says why). S_p is
-// built here from the distributed operator: a rank holds its own rows only, and so
-// not the diagonal of its neighbours' velocity rows that its pressure rows need.
-//
-// The defaults are set on the objects before KSPSetFromOptions, and the inner
-// solvers' in PETSc's options database unless given there, so that PETSC_OPTIONS can
-// change any of them: under the prefix "fluid_" for the iterative solver (e.g.
-// "-fluid_ksp_monitor", "-fluid_fieldsplit_u_pc_type gamg"), "fluid_direct_" for MUMPS.
+// the caller gives it (set_pressure_mass; finish_iterative says why). S_p is built
+// here from the distributed operator's blocks (petsc_blocks.hpp): a rank holds its own
+// rows only, and so not the diagonal of its neighbours' velocity rows that its
+// pressure rows need. The methods' defaults and PETSC_OPTIONS: petsc_ksp_defaults.hpp.
 #include "fluid/petsc_plugin.hpp"
 
 #include <petscksp.h>
 
 #include "fluid/petsc_block_operator.hpp"
 #include "fluid/petsc_blocks.hpp"
+#include "fluid/petsc_ksp_defaults.hpp"
 #include "fluid/petsc_schur.hpp"
 #include "fluid/petsc_try.hpp"
 
@@ -117,64 +114,6 @@ std::string set_layout(Solver& s, PetscInt n) {
     s.p_last =
         s.p_first + static_cast<PetscInt>(std::count(p.begin() + s.first, p.begin() + s.last, 1));
   }
-  return "";
-}
-
-std::string set_default(const char* name, const char* value) {
-  PetscBool given = PETSC_FALSE;
-  FSI_TRY(PetscOptionsHasName(nullptr, nullptr, name, &given));
-  if (!given) FSI_TRY(PetscOptionsSetValue(nullptr, name, value));
-  return "";
-}
-
-// MUMPS's LU, or its LDLᵀ for symmetric values.
-std::string set_direct(KSP ksp, bool symmetric) {
-  PC pc;
-  FSI_TRY(KSPGetPC(ksp, &pc));
-  FSI_TRY(KSPSetType(ksp, KSPPREONLY));
-  FSI_TRY(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU));
-  FSI_TRY(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  return "";
-}
-
-// GMRES or BiCGStab, right-preconditioned (the residual they converge on is b − A x
-// itself), by the upper block factorisation of the Schur split. GMRES(100) keeps up to
-// 101 vectors: 0.84 KB a triangle at h = 0.0025, a fifth of the run's memory; BiCGStab
-// keeps 7 at the cost of two preconditioner applications an iteration
-// (docs/performance.md, "The memory a triangle").
-std::string set_iterative(KSP ksp, const std::string& krylov) {
-  if (krylov == "bicgstab") {
-    FSI_TRY(KSPSetType(ksp, KSPBCGS));
-  } else if (krylov == "gmres") {
-    FSI_TRY(KSPSetType(ksp, KSPGMRES));
-    FSI_TRY(KSPGMRESSetRestart(ksp, 100));
-  } else {
-    return "unknown Krylov method \"" + krylov + "\"";
-  }
-  FSI_TRY(KSPSetPCSide(ksp, PC_RIGHT));
-  // The preconditioner (petsc_schur.hpp) is made at each set-up, and its inner solvers
-  // with it: their defaults go to the options database, which they read then, under
-  // the prefixes of PETSc's field split (kept for PETSC_OPTIONS). The velocity block couples its two
-  // components (the symmetric gradient) and holds the penalty's mass: BoomerAMG's
-  // strength threshold 0.7 instead of its 2D default 0.25 took GMRES from 215 to 65
-  // iterations at h = 0.005 and keeps them at 61-71 from h = 0.02 to 0.0025 (the
-  // §7.2 box, bench/petsc_study.py; docs/performance.md "PETSc"). Aggressive
-  // coarsening on the first level of both (agg_nl 1) trades more iterations for
-  // lighter hierarchies: with BiCGStab at 5.6 M unknowns 89 against 81 iterations but
-  // 210 against 337 s and 10.7 against 11.7 GB; on the 9 424-triangle §7.2 case the
-  // same time (docs/performance.md, "The memory a triangle").
-  const std::pair<const char*, const char*> inner[] = {
-      {"-fluid_fieldsplit_u_ksp_type", "preonly"},
-      {"-fluid_fieldsplit_u_pc_type", "hypre"},
-      {"-fluid_fieldsplit_u_pc_hypre_type", "boomeramg"},
-      {"-fluid_fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.7"},
-      {"-fluid_fieldsplit_u_pc_hypre_boomeramg_agg_nl", "1"},
-      {"-fluid_fieldsplit_p_ksp_type", "preonly"},
-      {"-fluid_fieldsplit_p_pc_type", "hypre"},
-      {"-fluid_fieldsplit_p_pc_hypre_type", "boomeramg"},
-      {"-fluid_fieldsplit_p_pc_hypre_boomeramg_agg_nl", "1"}};
-  for (const auto& [name, value] : inner)
-    if (std::string e = set_default(name, value); !e.empty()) return e;
   return "";
 }
 

@@ -1,5 +1,6 @@
-// Inside the PETSc plugin (petsc_plugin.cpp, petsc_schur.cpp): a PETSc call's error
-// returned as text from the enclosing function, never thrown across the library's edge.
+// Inside the PETSc plugin (petsc_plugin.cpp and the petsc_*.cpp beside it): a PETSc
+// call's error returned as text from the enclosing function, never thrown across the
+// library's edge.
 #pragma once
 
 #include <petscsys.h>
