@@ -494,6 +494,11 @@ CaseLimits& case_limits() {
   return limits;
 }
 
+double fluid_triangle_limit(const FluidParams& f) {
+  return f.linear_solver == "petsc-iterative" ? case_limits().fluid_triangles_iterative
+                                              : case_limits().fluid_triangles;
+}
+
 std::vector<std::string> case_keys() {
   std::vector<std::string> keys;
   read_case(toml::table{}, Origin{"(keys)", {}}, "", /*has_fluid_default=*/true, &keys);

@@ -283,6 +283,10 @@ std::string to_toml(const Case& c);
 struct CaseLimits {
   double structure_triangles = 2.0e5;  // the active-set solver's dense m × m contact Schur complement
   double fluid_triangles = 4.0e6;      // memory of the factorisation
+  // fluid.linear_solver = "petsc-iterative": 1.2 kB a triangle for a solve, 1.4 kB over
+  // several passes, 24 GB at this limit on one rank (docs/performance.md, "K freed
+  // before the set-up").
+  double fluid_triangles_iterative = 2.0e7;
   int max_iterations = 100000;
   double time_steps = 1.0e6;  // time.t_end / time.dt
   double time_frames = 1.0e5;  // written frames: time.t_end / time.dt / time.output_every + 1
@@ -290,5 +294,7 @@ struct CaseLimits {
 // The limits in force: the defaults above; the command-line fuzzer lowers them so
 // that each of its inputs runs in milliseconds (fuzz/fuzz_cli.cpp).
 CaseLimits& case_limits();
+// The fluid triangles a case may have with its linear solver.
+double fluid_triangle_limit(const FluidParams& f);
 
 }  // namespace fsi

@@ -197,10 +197,15 @@ void check_fluid_box(const Case& c, const Origin& o) {
     for (const Hole& hole : holes)
       if (f.h_obstacles < far) estimate += 2.4 * hole.perimeter() / kBandGrowth * (1 / f.h_obstacles - 1 / far);
   }
-  if (estimate > case_limits().fluid_triangles)
+  const double limit = fluid_triangle_limit(f);
+  if (estimate > limit)
     fail(o, "fluid.h", "= " + shortest(f.h) + " would need about " + approx(estimate) +
-                           " triangles, above the limit of " + shortest(case_limits().fluid_triangles),
-         ">= " + approx(std::sqrt(2.4 * area / case_limits().fluid_triangles)) + " for this box" +
+                           " triangles, above the limit of " + shortest(limit) +
+                           (f.linear_solver == "petsc-iterative"
+                                ? ""
+                                : " (" + shortest(case_limits().fluid_triangles_iterative) +
+                                      " with fluid.linear_solver = \"petsc-iterative\")"),
+         ">= " + approx(std::sqrt(2.4 * area / limit)) + " for this box" +
              (f.h_near > 0 ? ", or a larger fluid.h_near or a smaller fluid.band" : "") +
              (f.h_obstacles > 0 ? ", or a larger fluid.h_obstacles" : ""));
 }

@@ -36,10 +36,10 @@ Mesh build_fluid_mesh(const Case& c, const std::optional<std::array<double, 4>>&
   }
   if (!c.obstacles_given)
     return read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4", "Sigma_5"}, "D",
-                          case_limits().fluid_triangles);
+                          fluid_triangle_limit(f));
   // [[obstacles]]: a hole per obstacle (SPEC §9), checked by check_fluid_mesh.
   Mesh mesh = read_case_mesh(c, "fluid.mesh", f.mesh, {"Sigma_1", "Sigma_2", "Sigma_3", "Sigma_4"}, "D",
-                             case_limits().fluid_triangles, mesh_hole_groups(c));
+                             fluid_triangle_limit(f), mesh_hole_groups(c));
   name_mesh_holes(c, mesh);
   return mesh;
 }
