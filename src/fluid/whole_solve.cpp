@@ -23,8 +23,8 @@ void WholeSolve::prepare() {
   prepared_ = true;
 }
 
-// Assembles K (incrementally), factorises all of it (one symbolic analysis for the
-// run: the pattern never changes), solves.
+// Assembles K (incrementally; all of it for a solver that frees K), factorises all of
+// it (one symbolic analysis for the run: the pattern never changes), solves.
 void WholeSolve::solve(const Eigen::VectorXd& chi, double eps, SampledTriangles) {
   prepare();
   // The last set-up freed before this pass's matrices are built (K too, for a solver
