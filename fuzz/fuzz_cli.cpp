@@ -91,7 +91,8 @@ struct NullBuffer : std::streambuf {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   // Small problems: each input runs in milliseconds (fluid meshes of hF >= ~0.015 on
   // the paper's box).
-  fsi::case_limits() = {2000, 6000, 30, 30};
+  fsi::case_limits() = {.structure_triangles = 2000, .fluid_triangles = 6000, .fluid_triangles_iterative = 6000,
+                        .max_iterations = 30, .time_steps = 30};
   static const fs::path scratch = fs::temp_directory_path() / ("fsicontact-fuzz-cli-" + std::to_string(::getpid()));
   fs::remove_all(scratch);
   fs::create_directories(scratch);
