@@ -25,7 +25,7 @@ struct KBlocks {
 std::string take_blocks(Mat K, IS u, IS p, bool own_transpose, KBlocks& out);
 
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w (M null: without it), a new matrix: the reasons are
-// petsc_plugin.cpp's (schur preconditioner). "" or the error.
+// petsc_plugin.cpp's (finish_iterative). "" or the error.
 std::string schur_matrix(const KBlocks& k, Mat M, Mat& S);
 
 // Two vectors a field (a_u, b_u of u's layout, a_p, b_p of p's) and the scatters between

@@ -208,11 +208,12 @@ std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& o
 }
 
 // The iterative solver's next set-up starts from nothing: its Krylov method and
-// preconditioner (blocks, hierarchies) made anew, the last ones freed first. Reused, the split's copies of the
-// blocks and both hierarchies stayed alive while the next S_p and its scratch were
-// built: a run's later passes peaked 0.72 kB a triangle above its first (2 930 against
-// 2 260 MB at 930 681 triangles; docs/performance.md, "The memory a triangle, continued"). The
-// split's blocks and BoomerAMG's hierarchies are built anew at each set-up either way.
+// preconditioner (blocks, hierarchies) made anew, the last ones freed first. Reused,
+// the split's copies of the blocks and both hierarchies stayed alive while the next
+// S_p and its scratch were built: a run's later passes peaked 0.72 kB a triangle above
+// its first (2 930 against 2 260 MB at 930 681 triangles; docs/performance.md, "The
+// memory a triangle, continued"). The blocks and BoomerAMG's hierarchies are built
+// anew at each set-up either way.
 std::string release_preconditioner(Solver& s) {
   if (!s.config.iterative) return "";
   s.blocks.free();
@@ -380,11 +381,12 @@ std::string finish_set_up(void* handle) {
   return set_up_ksp(s);
 }
 
-// ‖b − K x‖ / ‖b‖ for the solution in s.x (one product, with the operator the Krylov
-// method used): the solve's accuracy, which the caller checks.
+// ‖b − K x‖ / ‖b‖ for the iterative solution in s.x (one product, with the operator by
+// blocks the Krylov method used): the solve's accuracy, which the caller, who freed K,
+// checks. The direct solver's caller keeps K and computes it itself.
 std::string true_residual(Solver& s, PetscReal bnorm, double& residual) {
   if (!s.r) FSI_TRY(VecDuplicate(s.b, &s.r));
-  FSI_TRY(MatMult(s.config.iterative ? s.op : s.A, s.x, s.r));
+  FSI_TRY(MatMult(s.op, s.x, s.r));
   FSI_TRY(VecAYPX(s.r, -1.0, s.b));
   PetscReal rnorm = 0;
   FSI_TRY(VecNorm(s.r, NORM_2, &rnorm));
@@ -418,7 +420,8 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   FSI_TRY(KSPGetResidualHistory(s.ksp, &h, &count));
   report.history.clear();
   for (PetscInt k = 0; k < count; ++k) report.history.push_back(bnorm > 0 ? h[k] / bnorm : h[k]);
-  if (std::string e = true_residual(s, bnorm, report.residual); !e.empty()) return e;
+  if (s.config.iterative)
+    if (std::string e = true_residual(s, bnorm, report.residual); !e.empty()) return e;
   if (reason < 0) return "PETSc: the solve did not converge (" + report.reason + ")";
   FSI_TRY(VecScatterBegin(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
   FSI_TRY(VecScatterEnd(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));

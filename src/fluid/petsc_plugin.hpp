@@ -47,7 +47,7 @@ struct PetscSolverConfig {
 
 struct PetscSolveReport {
   int iterations = 0;
-  double residual = 0;            // ‖b − A x‖ / ‖b‖ at the end, computed anew
+  double residual = 0;            // ‖b − A x‖ / ‖b‖ at the end, computed anew (iterative)
   std::vector<double> history;    // the residual norm of every iteration, relative
   std::string reason;             // PETSc's converged or diverged reason
 };

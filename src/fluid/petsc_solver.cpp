@@ -294,10 +294,9 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   Eigen::VectorXd x = warm ? last_solution_ : Eigen::VectorXd::Zero(rhs.size());
   const Eigen::VectorXd b = order_ * rhs;
   PetscSolveReport report;
-  last_residual_ = std::numeric_limits<double>::quiet_NaN();
   const std::string error = plugin_->solve(solver_, b.data(), x.data(), warm, report);
   if (iterative_) last_iterations_ = report.iterations;
-  last_residual_ = report.residual;
+  last_residual_ = iterative_ && error.empty() ? report.residual : std::numeric_limits<double>::quiet_NaN();
   if (!error.empty()) {
     std::string history;
     const std::size_t n = report.history.size(), shown = std::min<std::size_t>(n, 8);

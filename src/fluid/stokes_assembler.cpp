@@ -177,7 +177,6 @@ const std::uint16_t* StokesAssembler::slots(int t) const {
 
 void StokesAssembler::set_body_force(const VectorField& f) {
   f_ = f;
-  load_rule_ = triangle_rule(6);  // bubble (degree 3) × smooth f
   std::vector<ElementLoad>().swap(loads_);
   if (keep_loads_) {
     loads_.reserve(static_cast<std::size_t>(mesh_.num_triangles()));

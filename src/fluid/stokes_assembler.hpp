@@ -174,7 +174,7 @@ class StokesAssembler {
   double mu_;
   ViscousForm form_ = ViscousForm::symmetric;
   VectorField f_;                      // the body force
-  TriangleRule load_rule_;             // its elements' rule
+  TriangleRule load_rule_ = triangle_rule(6);  // its elements' rule: bubble (degree 3) × smooth f
   bool keep_loads_ = true;
   std::vector<ElementLoad> loads_;     // empty unless keep_loads_
   std::vector<std::shared_ptr<const ElementTerm>> terms_;  // beyond Stokes (add_term)

@@ -60,8 +60,9 @@ void expect_solves(SparseDirectSolver& solver, const Eigen::SparseMatrix<double>
   EXPECT_LE((x - expected).norm(), 1e-8 * expected.norm()) << solver.name() << ", " << what;
   // The residual a solver that frees A computes with its own blocks is A's.
   const double residual = (b - A * x).norm() / b.norm();
-  if (solver.detaches_from_operator())
+  if (solver.detaches_from_operator()) {
     EXPECT_NEAR(solver.last_residual(), residual, 0.5 * residual + 1e-13) << solver.name() << ", " << what;
+  }
 }
 
 TEST(PetscInPlace, TheSolutionFollowsTheOperatorsValuesAndArrays) {
