@@ -12,8 +12,12 @@
 
 namespace fsi {
 
-// op becomes the shell x ↦ K x for the blocks k (each referenced, not taken), K's rows
-// split into the index sets u and p of the vector `whole`'s layout. "" or the error.
-std::string make_block_operator(const KBlocks& k, IS u, IS p, Vec whole, Mat& op);
+// op becomes the shell x ↦ K x for the blocks k (each referenced, not taken) in the
+// layout of the vector `whole`, its work space v (shared). "" or the error.
+std::string make_block_operator(const KBlocks& k, std::shared_ptr<FieldVectors> v, Vec whole, Mat& op);
+
+// norm = ‖b − K x‖ for op made by make_block_operator, computed in its work space. "" or
+// the error.
+std::string block_residual_norm(Mat op, Vec x, Vec b, PetscReal& norm);
 
 }  // namespace fsi

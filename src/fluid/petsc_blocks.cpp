@@ -46,12 +46,14 @@ std::string schur_matrix(const KBlocks& k, Mat M, Mat& S) {
   return "";
 }
 
-std::string FieldVectors::make(Mat Bt, Vec whole, IS u, IS p) {
-  FSI_TRY(MatCreateVecs(Bt, &a_p, &a_u));
-  FSI_TRY(VecDuplicate(a_u, &b_u));
-  FSI_TRY(VecDuplicate(a_p, &b_p));
-  FSI_TRY(VecScatterCreate(whole, u, a_u, nullptr, &to_u));
-  FSI_TRY(VecScatterCreate(whole, p, a_p, nullptr, &to_p));
+std::string make_field_vectors(Mat Bt, Vec whole, IS u, IS p, std::shared_ptr<FieldVectors>& out) {
+  auto v = std::make_shared<FieldVectors>();
+  FSI_TRY(MatCreateVecs(Bt, &v->a_p, &v->a_u));
+  FSI_TRY(VecDuplicate(v->a_u, &v->b_u));
+  FSI_TRY(VecDuplicate(v->a_p, &v->b_p));
+  FSI_TRY(VecScatterCreate(whole, u, v->a_u, nullptr, &v->to_u));
+  FSI_TRY(VecScatterCreate(whole, p, v->a_p, nullptr, &v->to_p));
+  out = std::move(v);
   return "";
 }
 

@@ -69,8 +69,8 @@ struct Solver {
   Mat op = nullptr;    // iterative: the operator by its blocks (petsc_block_operator.hpp)
   PetscCsr borrowed;  // the caller's arrays A uses in place, if it does (borrowed.borrowed)
   Mat M = nullptr;  // the pressure mass matrix M_w, if given
-  Vec b = nullptr, x = nullptr, r = nullptr;  // r: b − K x, the true residual
-  Vec all = nullptr;  // x gathered on every rank
+  Vec b = nullptr, x = nullptr;
+  Vec all = nullptr;  // x gathered on every rank, on several ranks (x itself on one)
   VecScatter to_all = nullptr;
   KSP ksp = nullptr;
   bool set_up_once = false;  // since ksp was made
@@ -159,7 +159,6 @@ void destroy(void* handle) {
   MatDestroy(&s->M);
   VecDestroy(&s->b);
   VecDestroy(&s->x);
-  VecDestroy(&s->r);
   VecDestroy(&s->all);
   VecScatterDestroy(&s->to_all);
   ISDestroy(&s->fields[0]);
@@ -258,11 +257,14 @@ std::string finish_iterative(Solver& s) {
   KBlocks& k = s.blocks;
   Mat S = nullptr;
   PC pc = nullptr;
+  std::shared_ptr<FieldVectors> v;  // the preconditioner's and the operator's work space
   std::string e = schur_matrix(k, s.M, S);
+  MatDestroy(&s.M);  // in S_p now; the next set-up is given its own
   if (e.empty() && KSPGetPC(s.ksp, &pc)) e = "PETSc: KSPGetPC failed";
-  if (e.empty()) e = set_schur_factorisation(pc, k.A_u, S, k.Bt, s.fields[0], s.fields[1], s.x);
+  if (e.empty()) e = make_field_vectors(k.Bt, s.x, s.fields[0], s.fields[1], v);
+  if (e.empty()) e = set_schur_factorisation(pc, k.A_u, S, k.Bt, v);
   MatDestroy(&S);  // taken, unless an error came first
-  if (e.empty()) e = make_block_operator(k, s.fields[0], s.fields[1], s.x, s.op);
+  if (e.empty()) e = make_block_operator(k, v, s.x, s.op);
   k.free();  // the preconditioner and the operator hold them
   if (!e.empty()) return e;
   FSI_TRY(KSPSetOperators(s.ksp, s.op, s.op));
@@ -304,7 +306,7 @@ std::string first_operator(Solver& s, const PetscCsr& m) {
   if (std::string e = set_layout(s, m.n); !e.empty()) return e;
   if (std::string e = make_operator(s, m); !e.empty()) return e;
   FSI_TRY(MatCreateVecs(s.A, &s.x, &s.b));
-  FSI_TRY(VecScatterCreateToAll(s.x, &s.to_all, &s.all));
+  if (s.last - s.first < s.n) FSI_TRY(VecScatterCreateToAll(s.x, &s.to_all, &s.all));
   return "";
 }
 
@@ -385,11 +387,8 @@ std::string finish_set_up(void* handle) {
 // blocks the Krylov method used): the solve's accuracy, which the caller, who freed K,
 // checks. The direct solver's caller keeps K and computes it itself.
 std::string true_residual(Solver& s, PetscReal bnorm, double& residual) {
-  if (!s.r) FSI_TRY(VecDuplicate(s.b, &s.r));
-  FSI_TRY(MatMult(s.op, s.x, s.r));
-  FSI_TRY(VecAYPX(s.r, -1.0, s.b));
   PetscReal rnorm = 0;
-  FSI_TRY(VecNorm(s.r, NORM_2, &rnorm));
+  if (std::string e = block_residual_norm(s.op, s.x, s.b, rnorm); !e.empty()) return e;
   residual = bnorm > 0 ? rnorm / bnorm : rnorm;
   return "";
 }
@@ -423,15 +422,23 @@ std::string solve(void* handle, const double* b, double* x, bool warm, PetscSolv
   if (s.config.iterative)
     if (std::string e = true_residual(s, bnorm, report.residual); !e.empty()) return e;
   if (reason < 0) return "PETSc: the solve did not converge (" + report.reason + ")";
-  FSI_TRY(VecScatterBegin(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
-  FSI_TRY(VecScatterEnd(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
-  FSI_TRY(VecGetArray(s.all, &v));
+  if (s.to_all) {
+    FSI_TRY(VecScatterBegin(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
+    FSI_TRY(VecScatterEnd(s.to_all, s.x, s.all, INSERT_VALUES, SCATTER_FORWARD));
+  }
+  Vec whole = s.to_all ? s.all : s.x;
+  FSI_TRY(VecGetArray(whole, &v));
   std::copy(v, v + s.n, x);
-  FSI_TRY(VecRestoreArray(s.all, &v));
+  FSI_TRY(VecRestoreArray(whole, &v));
   return "";
 }
 
-std::string release(void* handle) { return release_preconditioner(*static_cast<Solver*>(handle)); }
+// M_w too, if no set-up took it: it was given for one (set_pressure_mass).
+std::string release(void* handle) {
+  auto& s = *static_cast<Solver*>(handle);
+  FSI_TRY(MatDestroy(&s.M));
+  return release_preconditioner(s);
+}
 
 const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,    row_block,         sum_over_ranks,
                              largest_over_ranks,  create,        set_operator,      set_up,

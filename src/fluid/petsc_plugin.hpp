@@ -81,9 +81,9 @@ struct PetscPlugin {
   // called. Nothing for MUMPS.
   std::string (*finish_set_up)(void* solver);
   // The pressure mass matrix M_w on the pressure unknowns, this rank's rows of it
-  // (iterative), before set_operator: the Schur preconditioner is then
-  // S_p = D − B diag(A)⁻¹ Bᵀ − M_w, built from the operator by PETSc (without it,
-  // the same less M_w: PETSc's "selfp").
+  // (iterative), before set_operator: the Schur preconditioner of the next set-up
+  // (only: M_w is freed once S_p is built) is then S_p = D − B diag(A)⁻¹ Bᵀ − M_w,
+  // built from the operator by PETSc (without it, the same less M_w: PETSc's "selfp").
   std::string (*set_pressure_mass)(void* solver, const PetscCsr& M);
   // x with A x = b, both of the whole size: this rank's rows [first, last) of b are
   // read; x holds the initial guess if `warm` (iterative), the whole solution on return.

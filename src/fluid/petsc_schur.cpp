@@ -10,7 +10,7 @@ namespace {
 struct Factorisation {
   KSP ksp_u = nullptr, ksp_p = nullptr;  // one V-cycle on A_u, one on S
   Mat Bt = nullptr;                      // K's (u, p) block
-  FieldVectors v;                        // a: r's fields, b: y's
+  std::shared_ptr<FieldVectors> v;       // a: r's fields, b: y's (the operator's too)
 };
 
 PetscErrorCode destroy_factorisation(PC pc) {
@@ -18,7 +18,6 @@ PetscErrorCode destroy_factorisation(PC pc) {
   PetscCall(PCShellGetContext(pc, &f));
   if (!f) return 0;
   KSPDestroy(&f->ksp_u), KSPDestroy(&f->ksp_p), MatDestroy(&f->Bt);
-  f->v.free();
   delete f;
   return 0;
 }
@@ -40,7 +39,7 @@ PetscErrorCode inner_solve(PC pc, KSP ksp, Vec b, Vec x) {
 PetscErrorCode apply(PC pc, Vec r, Vec y) {
   Factorisation* f = nullptr;
   PetscCall(PCShellGetContext(pc, &f));
-  FieldVectors& v = f->v;
+  FieldVectors& v = *f->v;
   PetscCall(v.split(r));
   PetscCall(inner_solve(pc, f->ksp_p, v.a_p, v.b_p));
   PetscCall(MatMult(f->Bt, v.b_p, v.b_u));
@@ -74,7 +73,7 @@ std::string inner(const char* prefix, Mat& M, KSP& ksp) {
 
 }  // namespace
 
-std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, IS u, IS p, Vec whole) {
+std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, std::shared_ptr<FieldVectors> v) {
   FSI_TRY(PCSetType(pc, PCSHELL));
   auto* f = new Factorisation;
   FSI_TRY(PCShellSetContext(pc, f));
@@ -87,7 +86,8 @@ std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, IS u, IS p,
   if (std::string e = inner("fluid_fieldsplit_p_", S, f->ksp_p); !e.empty()) return e;
   FSI_TRY(MatDestroy(&S));  // the solver holds it
   if (std::string e = inner("fluid_fieldsplit_u_", A_u, f->ksp_u); !e.empty()) return e;
-  return f->v.make(Bt, whole, u, p);
+  f->v = std::move(v);
+  return "";
 }
 
 }  // namespace fsi

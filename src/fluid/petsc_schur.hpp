@@ -19,16 +19,19 @@
 
 #include <petscksp.h>
 
+#include <memory>
 #include <string>
+
+#include "fluid/petsc_blocks.hpp"
 
 namespace fsi {
 
-// pc becomes P⁻¹ for the operator K split into the index sets u and p (this rank's rows
-// of each, in the layout of the vector `whole`), with K's velocity block A_u (taken; on
-// return the matrix the inner solver holds, hypre's copy when hypre's: the caller's
-// reference, which the block operator shares), the Schur complement's preconditioning
-// matrix S (taken and freed once hypre holds it) and K's (u, p) block Bt (referenced).
-// Both hierarchies are built here; they are freed with pc. "" or the error.
-std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, IS u, IS p, Vec whole);
+// pc becomes P⁻¹ for the operator K split by its fields, with K's velocity block A_u
+// (taken; on return the matrix the inner solver holds, hypre's copy when hypre's: the
+// caller's reference, which the block operator shares), the Schur complement's
+// preconditioning matrix S (taken and freed once hypre holds it), K's (u, p) block Bt
+// (referenced) and the fields' work space v (shared with the block operator). Both
+// hierarchies are built here; they are freed with pc. "" or the error.
+std::string set_schur_factorisation(PC pc, Mat& A_u, Mat& S, Mat Bt, std::shared_ptr<FieldVectors> v);
 
 }  // namespace fsi

@@ -289,12 +289,16 @@ void PetscSolver::release_factorization() {
     throw SolverFailure(name_ + ": " + error);
 }
 
+// The vectors beside the set-up, the memory's peak, are few: the last solution is
+// moved into the first iterate (not copied), and on one rank, where the order is the
+// identity, rhs is given as it is (docs/performance.md, "The run's later passes").
 Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
   const bool warm = last_solution_.size() == rhs.size();
-  Eigen::VectorXd x = warm ? last_solution_ : Eigen::VectorXd::Zero(rhs.size());
-  const Eigen::VectorXd b = order_ * rhs;
+  Eigen::VectorXd x = warm ? std::move(last_solution_) : Eigen::VectorXd::Zero(rhs.size());
+  last_solution_ = Eigen::VectorXd();
+  const Eigen::VectorXd ordered = ranks_ > 1 ? Eigen::VectorXd(order_ * rhs) : Eigen::VectorXd();
   PetscSolveReport report;
-  const std::string error = plugin_->solve(solver_, b.data(), x.data(), warm, report);
+  const std::string error = plugin_->solve(solver_, ranks_ > 1 ? ordered.data() : rhs.data(), x.data(), warm, report);
   if (iterative_) last_iterations_ = report.iterations;
   last_residual_ = iterative_ && error.empty() ? report.residual : std::numeric_limits<double>::quiet_NaN();
   if (!error.empty()) {
@@ -309,6 +313,7 @@ Eigen::VectorXd PetscSolver::solve_factorized(const Eigen::VectorXd& rhs) {
         ", fluid.linear_max_iterations = " + std::to_string(options_.max_iterations) + ")");
   }
   last_solution_ = x;
+  if (ranks_ == 1) return x;
   return order_.transpose() * x;
 }
 
