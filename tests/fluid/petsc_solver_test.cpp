@@ -5,6 +5,7 @@
 // its residual history. Without the PETSc plugin (the instrumented build:
 // cmake/Dependencies.cmake) asking for it is a SolverFailure naming the package.
 #include <gtest/gtest.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <csignal>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <numeric>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -307,6 +309,25 @@ TEST(PetscSolver, ANonFiniteEntryOnOneRankFailsEveryRank) {
   EXPECT_NO_THROW(solver.solve(b));
   if (last_rank) b[last_held] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(solver.solve(b), SolverFailure);
+}
+
+// Debian's PETSc links SuperLU_DIST, whose initialiser, run when the plugin is loaded,
+// tells the C allocator never to map a block of its own nor give memory back
+// (M_MMAP_MAX = 0, M_TRIM_THRESHOLD = -1): the iterative set-up's freed blocks then stay
+// resident, and a run's later passes peak higher. The loader sets them back
+// (common/plugin_loader.cpp): a large block is mapped on its own and unmapped when freed.
+TEST(PetscSolver, LoadingThePluginLeavesLargeBlocksGivenBackToTheSystem) {
+  if (!have_petsc()) GTEST_SKIP() << "built without PETSc";
+  const PetscSolver solver("petsc-iterative", small(1e-10, 100));
+  constexpr std::size_t size = std::size_t{64} << 20;
+  const std::size_t before = mallinfo2().hblkhd;
+  auto* block = static_cast<volatile char*>(std::malloc(size));
+  ASSERT_NE(block, nullptr);
+  block[0] = 1;
+  const std::size_t during = mallinfo2().hblkhd;
+  std::free(const_cast<char*>(block));
+  EXPECT_GE(during, before + size) << "a 64 MiB block was not mapped on its own, so it is never given back";
+  EXPECT_LT(mallinfo2().hblkhd, during) << "the block was not unmapped when freed";
 }
 
 TEST(PetscSolver, WithoutThePluginItIsASolverFailureNamingThePackage) {
