@@ -47,7 +47,7 @@ std::vector<std::string> plugin_candidates(const std::string& file) {
 // ever mapped on its own nor given back to the system, every large temporary of the
 // iterative set-up stays resident once freed, and a run's later passes peaked higher
 // and higher, by how much varying from run to run, as a set-up's blocks fitted the holes
-// the last one left or not (docs/performance.md, "The allocator's parameters"). Where a
+// the last one left or not (docs/performance.md, "The run's later passes"). Where a
 // plugin did that, they are set back: blocks of 1 MiB or more mapped on their own and
 // given back when freed. That costs time, each set-up's pages faulted in anew: 1 MiB
 // peaked as low as 128 KiB (1 034 and 1 032 MB over three passes at 930 k triangles,

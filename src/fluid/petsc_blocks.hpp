@@ -1,6 +1,6 @@
 // Inside the PETSc plugin: "petsc-iterative"'s saddle point K = [A_u Bᵀ; B D] by its
 // blocks, split by the fields (velocity u, pressure p; this rank's rows of each). The
-// iterative set-up takes them from K (take_blocks) and then needs K no more: the caller
+// iterative set-up takes them from K's rows (split_blocks) and then needs K no more: the caller
 // frees K before the rest of the set-up, the memory's peak (docs/performance.md, "K
 // freed before the set-up"). From the blocks come the Schur complement's preconditioning
 // matrix S_p (schur_matrix), the preconditioner (petsc_schur.hpp) and the operator the
@@ -9,8 +9,11 @@
 
 #include <petscmat.h>
 
+#include "fluid/petsc_plugin.hpp"
+
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace fsi {
 
@@ -21,9 +24,12 @@ struct KBlocks {
   void free();
 };
 
-// K's blocks (new matrices) for the index sets u and p. own_transpose: K equals Kᵀ bit
-// for bit (checked by the caller), so that B is not taken. "" or the error.
-std::string take_blocks(Mat K, IS u, IS p, bool own_transpose, KBlocks& out);
+// K's blocks (new matrices), straight from m, this rank's rows of K in PETSc's numbering:
+// a block holds this rank's rows of its row field, numbered among that field's
+// unknowns (is_pressure flags all n), as the index sets split them. own_transpose: K
+// equals Kᵀ bit for bit (checked by the caller), so that B is not made. "" or the error.
+std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure, bool own_transpose,
+                         KBlocks& out);
 
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w (M null: without it), a new matrix: the reasons are
 // petsc_plugin.cpp's (finish_iterative). "" or the error.
@@ -41,11 +47,10 @@ struct FieldVectors {
   FieldVectors() = default;
   FieldVectors(const FieldVectors&) = delete;
   FieldVectors& operator=(const FieldVectors&) = delete;
-  ~FieldVectors() { free(); }
+  ~FieldVectors();
   // whole → (a_u, a_p), and (u, p) → whole.
   PetscErrorCode split(Vec whole);
   PetscErrorCode join(Vec u, Vec p, Vec whole);
-  void free();
 };
 
 // A set for the layouts of Bᵀ (its rows u, its columns p) and of the whole vector,

@@ -64,8 +64,8 @@ namespace {
 struct Solver {
   PetscSolverConfig config;
   PetscInt n = -1, first = 0, last = 0, p_first = 0, p_last = 0;
-  Mat A = nullptr;     // the operator as given (iterative: until its blocks are taken)
-  KBlocks blocks;      // iterative, between set_up and finish_set_up (petsc_blocks.hpp)
+  Mat A = nullptr;     // the operator as given (direct; the iterative solver splits it)
+  KBlocks blocks;      // iterative, between set_operator and finish_set_up (petsc_blocks.hpp)
   Mat op = nullptr;    // iterative: the operator by its blocks (petsc_block_operator.hpp)
   PetscCsr borrowed;  // the caller's arrays A uses in place, if it does (borrowed.borrowed)
   Mat M = nullptr;  // the pressure mass matrix M_w, if given
@@ -232,15 +232,33 @@ std::string set_pressure_mass(void* handle, const PetscCsr& m) {
   return matrix_from(m, s.p_first, s.p_last, s.M);
 }
 
-// K split by the fields into its blocks, and K freed: on one rank the caller's arrays
-// are no longer read (the caller frees them before finish_set_up), on several PETSc's
-// copy of the rows is gone. B is Bᵀ's transpose where K is its own transpose, which is
-// known where K is borrowed (checked by PetscSolver); a block of its own otherwise.
-std::string take_blocks(Solver& s) {
-  if (std::string e = take_blocks(s.A, s.fields[0], s.fields[1], s.borrowed.borrowed, s.blocks); !e.empty())
+bool one_rank() {
+  PetscMPIInt ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  return ranks == 1;
+}
+
+// Iterative: K's blocks made straight from this rank's rows m (split_blocks), never K
+// itself; the caller's arrays are not read once this returns. B is Bᵀ's transpose where
+// K is its own transpose, which is known where the caller lends K (m.borrowed, checked
+// by PetscSolver; one rank); a block of its own otherwise.
+std::string split_operator(Solver& s, const PetscCsr& m) {
+  if (std::string e = set_layout(s, m.n); !e.empty()) return e;
+  if (m.first != s.first || m.last != s.last)
+    return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) +
+           ") given, this rank's are [" + std::to_string(s.first) + ", " + std::to_string(s.last) + ")";
+  if (!s.x) {
+    FSI_TRY(VecCreateMPI(PETSC_COMM_WORLD, s.last - s.first, s.n, &s.x));
+    FSI_TRY(VecDuplicate(s.x, &s.b));
+    if (s.last - s.first < s.n) FSI_TRY(VecScatterCreateToAll(s.x, &s.to_all, &s.all));
+  }
+  if (std::string e = split_blocks(m, s.config.is_pressure, m.borrowed && one_rank(), s.blocks); !e.empty())
     return e;
-  FSI_TRY(MatDestroy(&s.A));
-  s.borrowed = {};
+  if (s.config.symmetric)  // K's diagonal blocks are then symmetric too
+    for (Mat block : {s.blocks.A_u, s.blocks.D}) {
+      FSI_TRY(MatSetOption(block, MAT_SYMMETRIC, PETSC_TRUE));
+      FSI_TRY(MatSetOption(block, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+    }
   return "";
 }
 
@@ -281,12 +299,6 @@ std::string borrowed_matrix(Solver& s, const PetscCsr& m) {
                                     &s.A));
   s.borrowed = m;
   return "";
-}
-
-bool one_rank() {
-  PetscMPIInt ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  return ranks == 1;
 }
 
 // A, from m: borrowed (one rank, m.borrowed) or copied.
@@ -338,10 +350,11 @@ bool other_arrays(const Solver& s, const PetscCsr& m) {
 std::string set_operator(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
   if (std::string e = release_preconditioner(s); !e.empty()) return e;
+  if (s.config.iterative) return split_operator(s, m);
   if (!s.x) return first_operator(s, m);
   if (m.n != s.n)
     return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
-  if (!s.A || other_arrays(s, m)) {  // none: the iterative set-up took its blocks and freed it
+  if (!s.A || other_arrays(s, m)) {
     FSI_TRY(MatDestroy(&s.A));
     return make_operator(s, m);
   }
@@ -366,12 +379,12 @@ std::string set_up_ksp(Solver& s) {
   return "";
 }
 
-// Direct: the factorisation. Iterative: K's blocks taken and K freed; finish_set_up
-// does the rest (or the next solve, if the caller does not).
+// Direct: the factorisation. Iterative: nothing more (set_operator split K into its
+// blocks); finish_set_up does the rest (or the next solve, if the caller does not).
 std::string set_up(void* handle) {
   auto& s = *static_cast<Solver*>(handle);
-  if (!s.A) return "set_up() before set_operator()";
-  if (s.config.iterative) return take_blocks(s);
+  if (!(s.config.iterative ? s.blocks.taken() : s.A != nullptr)) return "set_up() before set_operator()";
+  if (s.config.iterative) return "";
   FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
   return set_up_ksp(s);
 }

@@ -69,12 +69,13 @@ struct PetscPlugin {
   int (*largest_over_ranks)(int local);
   // A solver (null and `error` set if it cannot be made).
   void* (*create)(const PetscSolverConfig& config, std::string& error);
-  // The operator's values (copied unless borrowed): its first call fixes the pattern.
+  // The operator's values (direct: copied unless borrowed; its first call fixes the
+  // pattern). Iterative: split at once into its blocks (petsc_blocks.hpp), never held
+  // whole, and A's arrays not read once this returns.
   std::string (*set_operator)(void* solver, const PetscCsr& A);
-  // After set_operator: the factorisation (direct); or (iterative) the operator's
-  // blocks taken (petsc_block_operator.hpp), after which its arrays are not read: the
-  // caller may free them before finish_set_up. Apart from set_operator so that the
-  // caller can free its rows first: the set-up is the memory's peak.
+  // After set_operator: the factorisation (direct); nothing more (iterative). Apart
+  // from finish_set_up so that the caller can free its rows first: the set-up is the
+  // memory's peak.
   std::string (*set_up)(void* solver);
   // After set_up (iterative): the Schur preconditioner's matrix and the
   // preconditioner's set-up, from the blocks taken; the next solve does it if not

@@ -258,8 +258,9 @@ void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
   }
   // On one rank a K that is its own transpose bit for bit (StokesAssembler::add_element)
   // has its columns for rows: PETSc uses its arrays in place. They stay unchanged until
-  // the solve (petsc-mumps), as SparseDirectSolver's callers keep A, or until set_up
-  // returns (petsc-iterative, which takes K's blocks then: detaches_from_operator()).
+  // the solve (petsc-mumps), as SparseDirectSolver's callers keep A, or until
+  // set_operator returns (petsc-iterative, which splits K into its blocks then:
+  // detaches_from_operator()).
   if (ranks_ == 1 && symmetric_ && is_own_transpose(A)) {
     const PetscCsr K{static_cast<int>(A.rows()), 0, static_cast<int>(A.rows()), A.outerIndexPtr(),
                      A.innerIndexPtr(), A.valuePtr(), true};

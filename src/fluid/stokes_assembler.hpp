@@ -93,7 +93,7 @@ class StokesAssembler {
   // Per unknown, 1 for a pressure's (the saddle point's second field).
   std::vector<char> pressure_unknowns() const;
   // The P1 pressure mass matrix Σ_T w_T ∫_T p q on the pressure unknowns, in their
-  // order among all unknowns (one weight per triangle).
+  // order among all unknowns (one weight per triangle): the rows held (share_rows).
   Eigen::SparseMatrix<double> pressure_mass(const Eigen::VectorXd& weight) const;
   long nonzeros() const { return nonzeros_; }  // of the whole K (built only if needed)
 
