@@ -28,10 +28,12 @@ def without_times(value):
 
 
 def comparable(summary):
-    """summary.json but what differs between two runs of the same case: the timings
-    and the output directory."""
+    """summary.json but what differs between two runs of the same case: the timings,
+    the output directory, and whether the process's allocator had huge pages (the
+    program starts itself again with them; a Python process is started by Python)."""
     s = without_times(summary)
     s["parameters"] = {k: v for k, v in s["parameters"].items() if k != "output"}
+    s["program"] = {k: v for k, v in s["program"].items() if k != "huge_pages"}
     return s
 
 

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <toml++/impl/version.h>
 
+#include "common/huge_pages.hpp"
 #include "fsicontact_commit.hpp"  // generated: cmake/Commit.cmake
 
 namespace fsi {
@@ -41,7 +42,7 @@ Json provenance_json() {
   const Provenance& p = provenance();
   Json libraries = Json::object();
   for (const auto& [name, version] : p.libraries) libraries[name] = version;
-  return {{"version", p.version}, {"commit", p.commit}, {"libraries", libraries}};
+  return {{"version", p.version}, {"commit", p.commit}, {"libraries", libraries}, {"huge_pages", uses_huge_pages()}};
 }
 
 std::string provenance_text() {
