@@ -11,7 +11,6 @@ namespace {
 
 constexpr const char* kTunable = "glibc.malloc.hugetlb=1";
 
-// AddressSanitizer's allocator replaces glibc's, whose tunable it ignores: no restart.
 #if defined(__SANITIZE_ADDRESS__)
 constexpr bool kSanitized = true;
 #elif defined(__has_feature)
@@ -43,6 +42,8 @@ bool uses_huge_pages() {
   return mode.find("[madvise]") != std::string::npos && tunables &&
          std::string(tunables).find(kTunable) != std::string::npos;
 }
+
+bool sanitized_allocator() { return kSanitized; }
 
 void restart_with_huge_pages(char** argv) {
   if (kSanitized || !wants_huge_page_restart(std::getenv("GLIBC_TUNABLES"), thp_mode())) return;

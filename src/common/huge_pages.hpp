@@ -24,6 +24,10 @@ bool wants_huge_page_restart(const char* tunables, const std::string& thp_mode);
 // program.huge_pages): the kernel's mode "[always]", or "[madvise]" and the tunable set.
 bool uses_huge_pages();
 
+// Whether AddressSanitizer's allocator replaces glibc's (which then has no tunable to
+// set: no restart).
+bool sanitized_allocator();
+
 // Starts this program again (/proc/self/exe, the same arguments) with the tunable
 // where wants_huge_page_restart says so. Returns only if it does not, or if the new
 // start failed (the run then goes on as it is).

@@ -15,6 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+
 TEST(HugePages, RestartOnlyWhereTheUserLeftTheTunableAloneAndTheKernelWaitsForAdvice) {
   const std::string advised = "always [madvise] never\n";
   EXPECT_TRUE(wants_huge_page_restart(nullptr, advised));
@@ -46,13 +47,7 @@ TEST(HugePages, ARunSaysWhetherItHadThemAndGivesTheSameNumbersEither) {
   const nlohmann::json off = run_summary("env GLIBC_TUNABLES=", dir, "off");
   const std::string mode = thp_mode();
   const bool always = mode.find("[always]") != std::string::npos;
-#if defined(__SANITIZE_ADDRESS__)
-  const bool restarts = false;
-#elif defined(__has_feature)
-  const bool restarts = !__has_feature(address_sanitizer);
-#else
-  const bool restarts = true;
-#endif
+  const bool restarts = !sanitized_allocator();  // as restart_with_huge_pages decides
   EXPECT_EQ(on["program"]["huge_pages"], always || (restarts && mode.find("[madvise]") != std::string::npos)) << mode;
   EXPECT_EQ(off["program"]["huge_pages"], always) << mode;
   EXPECT_EQ(on["max_displacement"], off["max_displacement"]);
