@@ -23,13 +23,12 @@ constexpr bool kSanitized = false;
 constexpr bool kSanitized = false;
 #endif
 
-// The kernel's mode, e.g. "always [madvise] never"; empty without the file.
+}  // namespace
+
 std::string thp_mode() {
   std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
-
-}  // namespace
 
 bool wants_huge_page_restart(const char* tunables, const std::string& mode) {
   return tunables == nullptr && mode.find("[madvise]") != std::string::npos;

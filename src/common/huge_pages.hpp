@@ -13,6 +13,10 @@
 
 namespace fsi {
 
+// The kernel's mode, /sys/kernel/mm/transparent_hugepage/enabled, e.g. "always
+// [madvise] never"; empty without the file.
+std::string thp_mode();
+
 // Whether a process whose GLIBC_TUNABLES is `tunables` (null: unset) starts again with
 // the tunable, on a kernel whose /sys/kernel/mm/transparent_hugepage/enabled reads
 // `thp_mode`: only where GLIBC_TUNABLES is unset (set, even empty, it is the user's

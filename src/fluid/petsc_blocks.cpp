@@ -25,6 +25,7 @@ struct FieldView {
   PetscInt start[2] = {0, 0}, end[2] = {0, 0};
   FieldView(const PetscCsr& rows, const std::vector<char>& pressure);
   int field(int i) const { return is_pressure[static_cast<std::size_t>(i)] ? 1 : 0; }
+  bool here(int i) const { return i >= m.first && i < m.last; }  // a row of this rank's
   PetscInt rows(int f) const { return end[f] - start[f]; }
 };
 
@@ -55,7 +56,7 @@ Shapes block_shapes(const FieldView& v) {
     const auto row = static_cast<std::size_t>(v.number[static_cast<std::size_t>(i)] - v.start[r]);
     for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k) {
       BlockShape& s = shape[static_cast<std::size_t>(r)][static_cast<std::size_t>(v.field(m.column[k]))];
-      ++(m.column[k] >= m.first && m.column[k] < m.last ? s.local : s.other)[row];
+      ++(v.here(m.column[k]) ? s.local : s.other)[row];
     }
   }
   return shape;
@@ -89,17 +90,17 @@ void fill_block(const FieldView& v, int r, int c, BlockArrays& b) {
   // Never empty: an empty vector's data() may be null, which PETSc refuses.
   b.j.resize(static_cast<std::size_t>(std::max<PetscInt>(b.i.back(), 1))), b.a.resize(b.j.size());
   b.oj.resize(static_cast<std::size_t>(std::max<PetscInt>(b.oi.back(), 1))), b.oa.resize(b.oj.size());
-  std::size_t here = 0, elsewhere = 0;
+  std::size_t on_rank = 0, off_rank = 0;  // entries filled of each part
   for (int i = m.first; i < m.last; ++i) {
     if (v.field(i) != r) continue;
     for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k) {
       const int col = m.column[k];
       if (v.field(col) != c) continue;
       const PetscInt number = v.number[static_cast<std::size_t>(col)];
-      if (col >= m.first && col < m.last)
-        b.j[here] = number - v.start[c], b.a[here++] = m.value[k];
+      if (v.here(col))
+        b.j[on_rank] = number - v.start[c], b.a[on_rank++] = m.value[k];
       else
-        b.oj[elsewhere] = number, b.oa[elsewhere++] = m.value[k];
+        b.oj[off_rank] = number, b.oa[off_rank++] = m.value[k];
     }
   }
 }
@@ -128,8 +129,8 @@ std::string make_block(const FieldView& v, int r, int c, const BlockShape& shape
 
 }  // namespace
 
-// One pass over the rows counts each block's entries a row; a pass a field over its
-// rows fills its blocks. On several ranks this replaced K's own copy in PETSc and four
+// One pass over the rows counts each block's entries a row; a pass a block over its
+// field's rows fills it. On several ranks this replaced K's own copy in PETSc and four
 // MatCreateSubMatrix (docs/performance.md, "Huge pages, and the set-up on two ranks").
 std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure, bool own_transpose,
                          KBlocks& out) {

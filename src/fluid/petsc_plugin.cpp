@@ -190,12 +190,17 @@ void* create(const PetscSolverConfig& config, std::string& error) {
   return nullptr;
 }
 
+// "" if m holds this rank's rows [first, last), else the error.
+std::string wrong_rows(const PetscCsr& m, PetscInt first, PetscInt last) {
+  if (m.first == first && m.last == last) return "";
+  return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) + ") given, this rank's are [" +
+         std::to_string(first) + ", " + std::to_string(last) + ")";
+}
+
 // A new matrix holding m, this rank's rows [first, last) of an n × n matrix (its
 // pattern and values): sequential on one rank, distributed on several.
 std::string matrix_from(const PetscCsr& m, PetscInt first, PetscInt last, Mat& out) {
-  if (m.first != first || m.last != last)
-    return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) +
-           ") given, this rank's are [" + std::to_string(first) + ", " + std::to_string(last) + ")";
+  if (std::string e = wrong_rows(m, first, last); !e.empty()) return e;
   static_assert(sizeof(PetscInt) == sizeof(int), "PetscCsr's indices are PETSc's");
   FSI_TRY(MatCreate(PETSC_COMM_WORLD, &out));
   FSI_TRY(MatSetSizes(out, last - first, last - first, m.n, m.n));
@@ -244,9 +249,7 @@ bool one_rank() {
 // by PetscSolver; one rank); a block of its own otherwise.
 std::string split_operator(Solver& s, const PetscCsr& m) {
   if (std::string e = set_layout(s, m.n); !e.empty()) return e;
-  if (m.first != s.first || m.last != s.last)
-    return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) +
-           ") given, this rank's are [" + std::to_string(s.first) + ", " + std::to_string(s.last) + ")";
+  if (std::string e = wrong_rows(m, s.first, s.last); !e.empty()) return e;
   if (!s.x) {
     FSI_TRY(VecCreateMPI(PETSC_COMM_WORLD, s.last - s.first, s.n, &s.x));
     FSI_TRY(VecDuplicate(s.x, &s.b));
@@ -383,8 +386,8 @@ std::string set_up_ksp(Solver& s) {
 // blocks); finish_set_up does the rest (or the next solve, if the caller does not).
 std::string set_up(void* handle) {
   auto& s = *static_cast<Solver*>(handle);
-  if (!(s.config.iterative ? s.blocks.taken() : s.A != nullptr)) return "set_up() before set_operator()";
-  if (s.config.iterative) return "";
+  if (s.config.iterative) return s.blocks.taken() ? "" : "set_up() before set_operator()";
+  if (!s.A) return "set_up() before set_operator()";
   FSI_TRY(KSPSetOperators(s.ksp, s.A, s.A));
   return set_up_ksp(s);
 }

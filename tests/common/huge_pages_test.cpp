@@ -4,9 +4,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <iterator>
-
 #include "common/huge_pages.hpp"
 #include "support/cli.hpp"
 
@@ -14,7 +11,6 @@ namespace fsi::huge_pages_test {
 namespace {
 
 namespace fs = std::filesystem;
-
 
 TEST(HugePages, RestartOnlyWhereTheUserLeftTheTunableAloneAndTheKernelWaitsForAdvice) {
   const std::string advised = "always [madvise] never\n";
@@ -25,11 +21,6 @@ TEST(HugePages, RestartOnlyWhereTheUserLeftTheTunableAloneAndTheKernelWaitsForAd
   EXPECT_FALSE(wants_huge_page_restart(nullptr, "[always] madvise never\n")) << "huge pages anyway";
   EXPECT_FALSE(wants_huge_page_restart(nullptr, "always madvise [never]\n"));
   EXPECT_FALSE(wants_huge_page_restart(nullptr, "")) << "no such file";
-}
-
-std::string thp_mode() {
-  std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 nlohmann::json run_summary(const std::string& env, const fs::path& dir, const std::string& out) {
