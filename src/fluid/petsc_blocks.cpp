@@ -84,32 +84,39 @@ std::vector<PetscInt> row_starts(const std::vector<PetscInt>& count) {
   return start;
 }
 
-// Block (r, c)'s entries, row by row in order (a row's columns stay sorted).
-void fill_block(const FieldView& v, int r, int c, BlockArrays& b) {
+// The blocks (r, 0) and (r, 1)'s entries (out[c]; null: not made), in one pass over
+// the rows of field r, row by row in order (a row's columns stay sorted): a pass a
+// block read each row twice.
+void fill_blocks(const FieldView& v, int r, const std::array<BlockArrays*, 2>& out) {
   const PetscCsr& m = v.m;
-  // Never empty: an empty vector's data() may be null, which PETSc refuses.
-  b.j.resize(static_cast<std::size_t>(std::max<PetscInt>(b.i.back(), 1))), b.a.resize(b.j.size());
-  b.oj.resize(static_cast<std::size_t>(std::max<PetscInt>(b.oi.back(), 1))), b.oa.resize(b.oj.size());
-  std::size_t on_rank = 0, off_rank = 0;  // entries filled of each part
+  std::array<std::size_t, 2> on_rank{}, off_rank{};  // entries filled of each part
+  for (BlockArrays* b : out) {
+    if (!b) continue;
+    // Never empty: an empty vector's data() may be null, which PETSc refuses.
+    b->j.resize(static_cast<std::size_t>(std::max<PetscInt>(b->i.back(), 1))), b->a.resize(b->j.size());
+    b->oj.resize(static_cast<std::size_t>(std::max<PetscInt>(b->oi.back(), 1))), b->oa.resize(b->oj.size());
+  }
   for (int i = m.first; i < m.last; ++i) {
     if (v.field(i) != r) continue;
     for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k) {
-      const int col = m.column[k];
-      if (v.field(col) != c) continue;
+      const int col = m.column[k], c = v.field(col);
+      BlockArrays* const b = out[static_cast<std::size_t>(c)];
+      if (!b) continue;
       const PetscInt number = v.number[static_cast<std::size_t>(col)];
-      if (v.here(col))
-        b.j[on_rank] = number - v.start[c], b.a[on_rank++] = m.value[k];
-      else
-        b.oj[off_rank] = number, b.oa[off_rank++] = m.value[k];
+      if (v.here(col)) {
+        std::size_t& at = on_rank[static_cast<std::size_t>(c)];
+        b->j[at] = number - v.start[c], b->a[at++] = m.value[k];
+      } else {
+        std::size_t& at = off_rank[static_cast<std::size_t>(c)];
+        b->oj[at] = number, b->oa[at++] = m.value[k];
+      }
     }
   }
 }
 
-std::string make_block(const FieldView& v, int r, int c, const BlockShape& shape, Mat& out) {
-  auto arrays = std::make_unique<BlockArrays>();
+// Block (r, c)'s matrix on its filled arrays, which it then owns.
+std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockArrays> arrays, Mat& out) {
   BlockArrays& b = *arrays;
-  b.i = row_starts(shape.local), b.oi = row_starts(shape.other);
-  fill_block(v, r, c, b);
   if (v.m.last - v.m.first == v.m.n)
     FSI_TRY(MatCreateSeqAIJWithArrays(PETSC_COMM_WORLD, v.rows(r), v.rows(c), b.i.data(), b.j.data(),
                                       b.a.data(), &out));
@@ -129,21 +136,30 @@ std::string make_block(const FieldView& v, int r, int c, const BlockShape& shape
 
 }  // namespace
 
-// One pass over the rows counts each block's entries a row; a pass a block over its
-// field's rows fills it. On several ranks this replaced K's own copy in PETSc and four
+// One pass over the rows counts each block's entries a row; a pass a field fills its
+// blocks. On several ranks this replaced K's own copy in PETSc and four
 // MatCreateSubMatrix (docs/performance.md, "Huge pages, and the set-up on two ranks").
 std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure, bool own_transpose,
                          KBlocks& out) {
   const FieldView v(m, is_pressure);
   const Shapes shape = block_shapes(v);
   Mat* const block[2][2] = {{&out.A_u, &out.Bt}, {own_transpose ? nullptr : &out.B, &out.D}};
-  for (int r = 0; r < 2; ++r)
+  for (int r = 0; r < 2; ++r) {
+    std::array<std::unique_ptr<BlockArrays>, 2> arrays;
+    for (int c = 0; c < 2; ++c)
+      if (block[r][c]) {
+        const BlockShape& s = shape[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+        arrays[static_cast<std::size_t>(c)] = std::make_unique<BlockArrays>();
+        arrays[static_cast<std::size_t>(c)]->i = row_starts(s.local);
+        arrays[static_cast<std::size_t>(c)]->oi = row_starts(s.other);
+      }
+    fill_blocks(v, r, {arrays[0].get(), arrays[1].get()});
     for (int c = 0; c < 2; ++c)
       if (block[r][c])
-        if (std::string e = make_block(v, r, c, shape[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)],
-                                       *block[r][c]);
+        if (std::string e = make_block(v, r, c, std::move(arrays[static_cast<std::size_t>(c)]), *block[r][c]);
             !e.empty())
           return e;
+  }
   return "";
 }
 

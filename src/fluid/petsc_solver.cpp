@@ -189,8 +189,10 @@ bool is_own_transpose(const Eigen::SparseMatrix<double>& A) {
 }
 
 // Rows [first, last) of P A Pᵀ (P: old number i → to[i]), compressed by rows, each
-// row's columns sorted, straight from A's columns in one pass. A holds, on several
-// ranks, this rank's rows alone: P A Pᵀ and then its rows would be two more copies.
+// row's columns sorted, straight from A's columns (a pass to count, one to fill). A
+// holds, on several ranks, this rank's rows alone: P A Pᵀ and then its rows would be
+// two more copies. The columns are read in their new order, so that each row's come
+// sorted and no row needs sorting afterwards.
 struct OrderedRows {
   std::vector<int> start, column;
   std::vector<double> value;
@@ -203,30 +205,24 @@ OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, in
   OrderedRows r;
   r.start.assign(static_cast<std::size_t>(last - first) + 1, 0);
   const auto held = [&](int i) { return to[i] >= first && to[i] < last; };
+  const int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr(), *filled = A.innerNonZeroPtr();
+  const auto end = [&](int j) { return filled ? outer[j] + filled[j] : outer[j + 1]; };  // not compressed: filled
   for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-      if (held(static_cast<int>(it.row())))
-        ++r.start[static_cast<std::size_t>(to[it.row()] - first) + 1];
+    for (int k = outer[j]; k < end(j); ++k)
+      if (held(inner[k])) ++r.start[static_cast<std::size_t>(to[inner[k]] - first) + 1];
   std::partial_sum(r.start.begin(), r.start.end(), r.start.begin());
   r.column.resize(static_cast<std::size_t>(r.start.back()));
   r.value.resize(r.column.size());
+  std::vector<int> from(static_cast<std::size_t>(A.outerSize()));  // new number → old
+  for (int j = 0; j < A.outerSize(); ++j) from[static_cast<std::size_t>(to[j])] = j;
   std::vector<int> next(r.start.begin(), r.start.end() - 1);
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-      if (held(static_cast<int>(it.row()))) {
-        const auto k =
-            static_cast<std::size_t>(next[static_cast<std::size_t>(to[it.row()] - first)]++);
-        r.column[k] = to[j], r.value[k] = it.value();
+  for (int jn = 0; jn < A.outerSize(); ++jn) {
+    const int j = from[static_cast<std::size_t>(jn)];
+    for (int k = outer[j]; k < end(j); ++k)
+      if (held(inner[k])) {
+        const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(to[inner[k]] - first)]++);
+        r.column[at] = jn, r.value[at] = A.valuePtr()[k];
       }
-  std::vector<std::pair<int, double>> row;
-  for (std::size_t i = 0; i + 1 < r.start.size(); ++i) {
-    const auto b = static_cast<std::size_t>(r.start[i]),
-               e = static_cast<std::size_t>(r.start[i + 1]);
-    row.clear();
-    for (std::size_t k = b; k < e; ++k) row.emplace_back(r.column[k], r.value[k]);
-    std::sort(row.begin(), row.end());
-    for (std::size_t k = b; k < e; ++k)
-      r.column[k] = row[k - b].first, r.value[k] = row[k - b].second;
   }
   return r;
 }
