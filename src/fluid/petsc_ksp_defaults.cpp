@@ -54,10 +54,11 @@ std::string set_iterative(KSP ksp, const std::string& krylov) {
   // same time (docs/performance.md, "The memory a triangle"). Both smooth by hypre's
   // Chebyshev polynomial (degree 2, on D^-1/2 A D^-1/2) instead of its hybrid symmetric
   // Gauss-Seidel: matrix-vector products, which stream and split across ranks, where
-  // Gauss-Seidel runs row after row. At 930 681 triangles (h = 0.001) the solve took
-  // 27.1 -> 21.9 s on one rank and 18.4 -> 13.2 s on two, 106 -> 107 and 111 -> 113
-  // GMRES iterations; from h = 0.02 to 0.0025 and ε = 1e-3 to 1e-7 the iterations stay
-  // within ±15 % (docs/performance.md, "Chebyshev smoothing").
+  // Gauss-Seidel runs row after row. At 930 681 triangles (h = 0.001) the Krylov solve
+  // took 30.4 -> 22.5 s on one rank and 19.3 -> 15.2 s on two (medians of four
+  // interleaved rounds), with 106 -> 107 and 111 -> 113 GMRES iterations; from h = 0.02
+  // to 0.0025 and ε = 1e-3 to 1e-7, GMRES's iterations changed by -11 to +5 % and
+  // BiCGStab's by -6 to +18 % (docs/performance.md, "Chebyshev smoothing").
   const std::pair<const char*, const char*> inner[] = {
       {"-fluid_fieldsplit_u_ksp_type", "preonly"},
       {"-fluid_fieldsplit_u_pc_type", "hypre"},
