@@ -114,16 +114,17 @@ void fill_blocks(const FieldView& v, int r, const std::array<BlockArrays*, 2>& o
   }
 }
 
-// Block (r, c)'s matrix on its filled arrays, which it then owns.
-std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockArrays> arrays, Mat& out) {
+// A matrix of this rank's rows × cols on filled arrays, which it then owns: compressed
+// rows, their columns on this rank numbered from the first and, on several ranks (whole
+// false), those elsewhere by their global numbers.
+std::string matrix_on(PetscInt rows, PetscInt cols, bool whole, std::unique_ptr<BlockArrays> arrays, Mat& out) {
   BlockArrays& b = *arrays;
-  if (v.m.last - v.m.first == v.m.n)
-    FSI_TRY(MatCreateSeqAIJWithArrays(PETSC_COMM_WORLD, v.rows(r), v.rows(c), b.i.data(), b.j.data(),
-                                      b.a.data(), &out));
+  if (whole)
+    FSI_TRY(MatCreateSeqAIJWithArrays(PETSC_COMM_WORLD, rows, cols, b.i.data(), b.j.data(), b.a.data(), &out));
   else
-    FSI_TRY(MatCreateMPIAIJWithSplitArrays(PETSC_COMM_WORLD, v.rows(r), v.rows(c), PETSC_DETERMINE,
-                                           PETSC_DETERMINE, b.i.data(), b.j.data(), b.a.data(),
-                                           b.oi.data(), b.oj.data(), b.oa.data(), &out));
+    FSI_TRY(MatCreateMPIAIJWithSplitArrays(PETSC_COMM_WORLD, rows, cols, PETSC_DETERMINE, PETSC_DETERMINE,
+                                           b.i.data(), b.j.data(), b.a.data(), b.oi.data(), b.oj.data(),
+                                           b.oa.data(), &out));
   PetscContainer owner = nullptr;
   FSI_TRY(PetscContainerCreate(PETSC_COMM_SELF, &owner));
   FSI_TRY(PetscContainerSetPointer(owner, arrays.release()));
@@ -132,6 +133,11 @@ std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockAr
                              reinterpret_cast<PetscObject>(owner)));
   FSI_TRY(PetscContainerDestroy(&owner));  // out holds it now
   return "";
+}
+
+// Block (r, c)'s matrix on its filled arrays.
+std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockArrays> arrays, Mat& out) {
+  return matrix_on(v.rows(r), v.rows(c), v.m.last - v.m.first == v.m.n, std::move(arrays), out);
 }
 
 }  // namespace
@@ -168,9 +174,73 @@ namespace {
 // What schur_matrix makes and then destroys, destroyed on every path.
 struct SchurScratch {
   Vec inverse = nullptr;
-  Mat up = nullptr;
-  ~SchurScratch() { VecDestroy(&inverse), MatDestroy(&up); }
+  Mat up = nullptr, product = nullptr;
+  ~SchurScratch() { VecDestroy(&inverse), MatDestroy(&up), MatDestroy(&product); }
 };
+
+// A term of a sum of matrices of one layout: the matrix, its sign and, while a row is
+// added, that row (its global columns, sorted) and how far it has been read.
+struct Term {
+  Mat A;
+  PetscScalar sign;
+  PetscInt n = 0, at = 0;
+  const PetscInt* column = nullptr;
+  const PetscScalar* value = nullptr;
+};
+
+// This rank's row of Σ sign A over the terms, appended to b: the union of the terms'
+// columns, merged in order, each entry summed in the terms' order.
+void add_row(std::vector<Term>& terms, PetscInt first_column, PetscInt end_column, BlockArrays& b) {
+  for (;;) {
+    PetscInt c = PETSC_MAX_INT;
+    for (const Term& t : terms)
+      if (t.at < t.n) c = std::min(c, t.column[t.at]);
+    if (c == PETSC_MAX_INT) return;
+    PetscScalar sum = 0.0;
+    for (Term& t : terms)
+      if (t.at < t.n && t.column[t.at] == c) sum += t.sign * t.value[t.at++];
+    if (c >= first_column && c < end_column)
+      b.j.push_back(c - first_column), b.a.push_back(sum);
+    else
+      b.oj.push_back(c), b.oa.push_back(sum);
+  }
+}
+
+// Σ sign A over the terms, a new matrix, in one pass over their rows. Two MatAXPY of
+// different patterns, each making a new matrix through MatSetValues, took 0.28 s on one
+// rank and 0.25 s a rank on two for S_p at 1.4 M unknowns (docs/performance.md,
+// "Chebyshev smoothing, and the set-up by parts again").
+std::string sum_of(std::vector<Term> terms, Mat& S) {
+  PetscInt first = 0, last = 0, first_column = 0, end_column = 0;
+  FSI_TRY(MatGetOwnershipRange(terms[0].A, &first, &last));
+  FSI_TRY(MatGetOwnershipRangeColumn(terms[0].A, &first_column, &end_column));
+  PetscMPIInt ranks = 1;
+  MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(terms[0].A)), &ranks);
+  auto arrays = std::make_unique<BlockArrays>();
+  BlockArrays& b = *arrays;
+  double entries = 0.0;  // at most, the terms' own, reserved so that no array grows twice
+  for (const Term& t : terms) {
+    MatInfo info;
+    FSI_TRY(MatGetInfo(t.A, MAT_LOCAL, &info));
+    entries += info.nz_used;
+  }
+  b.i.reserve(static_cast<std::size_t>(last - first) + 1), b.oi.reserve(b.i.capacity());
+  b.j.reserve(static_cast<std::size_t>(entries)), b.a.reserve(b.j.capacity());
+  b.i.push_back(0), b.oi.push_back(0);
+  for (PetscInt row = first; row < last; ++row) {
+    for (Term& t : terms) {
+      FSI_TRY(MatGetRow(t.A, row, &t.n, &t.column, &t.value));
+      t.at = 0;
+    }
+    add_row(terms, first_column, end_column, b);
+    for (Term& t : terms) FSI_TRY(MatRestoreRow(t.A, row, &t.n, &t.column, &t.value));
+    b.i.push_back(static_cast<PetscInt>(b.j.size())), b.oi.push_back(static_cast<PetscInt>(b.oj.size()));
+  }
+  // Never empty: an empty vector's data() may be null, which PETSc refuses.
+  if (b.j.empty()) b.j.push_back(0), b.a.push_back(0.0);
+  if (b.oj.empty()) b.oj.push_back(0), b.oa.push_back(0.0);
+  return matrix_on(last - first, end_column - first_column, ranks == 1, std::move(arrays), S);
+}
 
 }  // namespace
 
@@ -185,14 +255,14 @@ std::string schur_matrix(const KBlocks& k, Mat M, Mat& S) {
   FSI_TRY(MatDuplicate(k.Bt, MAT_COPY_VALUES, &x.up));
   FSI_TRY(MatDiagonalScale(x.up, x.inverse, nullptr));
   if (k.B)
-    FSI_TRY(MatMatMult(k.B, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &S));
+    FSI_TRY(MatMatMult(k.B, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &x.product));
   else
-    FSI_TRY(MatTransposeMatMult(k.Bt, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &S));
-  FSI_TRY(MatProductClear(S));
+    FSI_TRY(MatTransposeMatMult(k.Bt, x.up, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &x.product));
+  FSI_TRY(MatProductClear(x.product));
   FSI_TRY(MatDestroy(&x.up));
-  FSI_TRY(MatAYPX(S, -1.0, k.D, DIFFERENT_NONZERO_PATTERN));  // S = D − B diag(A_u)⁻¹ Bᵀ
-  if (M) FSI_TRY(MatAXPY(S, -1.0, M, DIFFERENT_NONZERO_PATTERN));
-  return "";
+  std::vector<Term> terms{{k.D, 1.0}, {x.product, -1.0}};  // S = D − B diag(A_u)⁻¹ Bᵀ
+  if (M) terms.push_back({M, -1.0});                        // − M_w
+  return sum_of(std::move(terms), S);
 }
 
 std::string make_field_vectors(Mat Bt, Vec whole, IS u, IS p, std::shared_ptr<FieldVectors>& out) {
