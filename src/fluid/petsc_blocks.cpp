@@ -90,12 +90,11 @@ std::vector<PetscInt> row_starts(const std::vector<PetscInt>& count) {
 void fill_blocks(const FieldView& v, int r, const std::array<BlockArrays*, 2>& out) {
   const PetscCsr& m = v.m;
   std::array<std::size_t, 2> on_rank{}, off_rank{};  // entries filled of each part
-  for (BlockArrays* b : out) {
-    if (!b) continue;
-    // Never empty: an empty vector's data() may be null, which PETSc refuses.
-    b->j.resize(static_cast<std::size_t>(std::max<PetscInt>(b->i.back(), 1))), b->a.resize(b->j.size());
-    b->oj.resize(static_cast<std::size_t>(std::max<PetscInt>(b->oi.back(), 1))), b->oa.resize(b->oj.size());
-  }
+  for (BlockArrays* b : out)
+    if (b) {
+      b->j.resize(static_cast<std::size_t>(b->i.back())), b->a.resize(b->j.size());
+      b->oj.resize(static_cast<std::size_t>(b->oi.back())), b->oa.resize(b->oj.size());
+    }
   for (int i = m.first; i < m.last; ++i) {
     if (v.field(i) != r) continue;
     for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k) {
@@ -119,6 +118,10 @@ void fill_blocks(const FieldView& v, int r, const std::array<BlockArrays*, 2>& o
 // false), those elsewhere by their global numbers.
 std::string matrix_on(PetscInt rows, PetscInt cols, bool whole, std::unique_ptr<BlockArrays> arrays, Mat& out) {
   BlockArrays& b = *arrays;
+  // Never empty: an empty vector's data() may be null, which PETSc refuses (the entry
+  // past the last row's end is never read).
+  if (b.j.empty()) b.j.push_back(0), b.a.push_back(0.0);
+  if (b.oj.empty()) b.oj.push_back(0), b.oa.push_back(0.0);
   if (whole)
     FSI_TRY(MatCreateSeqAIJWithArrays(PETSC_COMM_WORLD, rows, cols, b.i.data(), b.j.data(), b.a.data(), &out));
   else
@@ -214,7 +217,7 @@ std::string sum_of(std::vector<Term> terms, Mat& S) {
   PetscInt first = 0, last = 0, first_column = 0, end_column = 0;
   FSI_TRY(MatGetOwnershipRange(terms[0].A, &first, &last));
   FSI_TRY(MatGetOwnershipRangeColumn(terms[0].A, &first_column, &end_column));
-  PetscMPIInt ranks = 1;
+  PetscMPIInt ranks = 1;  // a rank could hold all of S's rows and still not be alone
   MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(terms[0].A)), &ranks);
   auto arrays = std::make_unique<BlockArrays>();
   BlockArrays& b = *arrays;
@@ -236,9 +239,6 @@ std::string sum_of(std::vector<Term> terms, Mat& S) {
     for (Term& t : terms) FSI_TRY(MatRestoreRow(t.A, row, &t.n, &t.column, &t.value));
     b.i.push_back(static_cast<PetscInt>(b.j.size())), b.oi.push_back(static_cast<PetscInt>(b.oj.size()));
   }
-  // Never empty: an empty vector's data() may be null, which PETSc refuses.
-  if (b.j.empty()) b.j.push_back(0), b.a.push_back(0.0);
-  if (b.oj.empty()) b.oj.push_back(0), b.oa.push_back(0.0);
   return matrix_on(last - first, end_column - first_column, ranks == 1, std::move(arrays), S);
 }
 

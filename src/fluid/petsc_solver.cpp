@@ -205,11 +205,10 @@ OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, in
   OrderedRows r;
   r.start.assign(static_cast<std::size_t>(last - first) + 1, 0);
   const auto held = [&](int i) { return to[i] >= first && to[i] < last; };
-  const int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr(), *filled = A.innerNonZeroPtr();
-  const auto end = [&](int j) { return filled ? outer[j] + filled[j] : outer[j + 1]; };  // not compressed: filled
+  using Entry = Eigen::SparseMatrix<double>::InnerIterator;
   for (int j = 0; j < A.outerSize(); ++j)
-    for (int k = outer[j]; k < end(j); ++k)
-      if (held(inner[k])) ++r.start[static_cast<std::size_t>(to[inner[k]] - first) + 1];
+    for (Entry it(A, j); it; ++it)
+      if (held(static_cast<int>(it.row()))) ++r.start[static_cast<std::size_t>(to[it.row()] - first) + 1];
   std::partial_sum(r.start.begin(), r.start.end(), r.start.begin());
   r.column.resize(static_cast<std::size_t>(r.start.back()));
   r.value.resize(r.column.size());
@@ -218,10 +217,10 @@ OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, in
   std::vector<int> next(r.start.begin(), r.start.end() - 1);
   for (int jn = 0; jn < A.outerSize(); ++jn) {
     const int j = from[static_cast<std::size_t>(jn)];
-    for (int k = outer[j]; k < end(j); ++k)
-      if (held(inner[k])) {
-        const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(to[inner[k]] - first)]++);
-        r.column[at] = jn, r.value[at] = A.valuePtr()[k];
+    for (Entry it(A, j); it; ++it)
+      if (held(static_cast<int>(it.row()))) {
+        const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(to[it.row()] - first)]++);
+        r.column[at] = jn, r.value[at] = it.value();
       }
   }
   return r;
