@@ -17,23 +17,28 @@ namespace {
 // This rank's rows of K seen by the fields (velocity 0, pressure 1): each unknown's
 // number among its field's unknowns, as the index sets split them (petsc_plugin.cpp's
 // split_fields) and the field vectors are laid out, and this rank's numbers of each
-// field, [start, end).
+// field, [start, end). Rows and columns in PETSc's numbering.
 struct FieldView {
-  const PetscCsr& m;
+  int n, first, last;  // this rank's rows [first, last) of n
   const std::vector<char>& is_pressure;
   std::vector<PetscInt> number;
   PetscInt start[2] = {0, 0}, end[2] = {0, 0};
-  FieldView(const PetscCsr& rows, const std::vector<char>& pressure);
+  FieldView(int size, int first_row, int end_row, const std::vector<char>& pressure);
   int field(int i) const { return is_pressure[static_cast<std::size_t>(i)] ? 1 : 0; }
-  bool here(int i) const { return i >= m.first && i < m.last; }  // a row of this rank's
+  bool here(int i) const { return i >= first && i < last; }  // a row of this rank's
   PetscInt rows(int f) const { return end[f] - start[f]; }
+  bool whole() const { return last - first == n; }
+  // Row i's number in its field's blocks, from 0 on this rank.
+  std::size_t row_in_block(int i) const {
+    return static_cast<std::size_t>(number[static_cast<std::size_t>(i)] - start[field(i)]);
+  }
 };
 
-FieldView::FieldView(const PetscCsr& rows, const std::vector<char>& pressure)
-    : m(rows), is_pressure(pressure), number(pressure.size()) {
+FieldView::FieldView(int size, int first_row, int end_row, const std::vector<char>& pressure)
+    : n(size), first(first_row), last(end_row), is_pressure(pressure), number(pressure.size()) {
   PetscInt count[2] = {0, 0};
   for (std::size_t i = 0; i < number.size(); ++i) number[i] = count[field(static_cast<int>(i))]++;
-  for (int i = 0; i < m.last; ++i) ++(i < m.first ? start : end)[field(i)];
+  for (int i = 0; i < last; ++i) ++(i < first ? start : end)[field(i)];
   for (int f = 0; f < 2; ++f) end[f] += start[f];
 }
 
@@ -45,20 +50,25 @@ struct BlockShape {
 
 using Shapes = std::array<std::array<BlockShape, 2>, 2>;
 
-Shapes block_shapes(const FieldView& v) {
+Shapes empty_shapes(const FieldView& v) {
   Shapes shape;
   for (int r = 0; r < 2; ++r)
     for (auto& s : shape[static_cast<std::size_t>(r)])
       s.local.assign(static_cast<std::size_t>(v.rows(r)), 0), s.other = s.local;
-  const PetscCsr& m = v.m;
-  for (int i = m.first; i < m.last; ++i) {
-    const int r = v.field(i);
-    const auto row = static_cast<std::size_t>(v.number[static_cast<std::size_t>(i)] - v.start[r]);
-    for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k) {
-      BlockShape& s = shape[static_cast<std::size_t>(r)][static_cast<std::size_t>(v.field(m.column[k]))];
-      ++(v.here(m.column[k]) ? s.local : s.other)[row];
-    }
-  }
+  return shape;
+}
+
+// Entry (i, j) of this rank's rows counted in its block's row.
+void count_entry(const FieldView& v, Shapes& shape, int i, int j) {
+  BlockShape& s = shape[static_cast<std::size_t>(v.field(i))][static_cast<std::size_t>(v.field(j))];
+  ++(v.here(j) ? s.local : s.other)[v.row_in_block(i)];
+}
+
+Shapes block_shapes(const FieldView& v, const PetscCsr& m) {
+  Shapes shape = empty_shapes(v);
+  for (int i = m.first; i < m.last; ++i)
+    for (int k = m.row_start[i - m.first]; k < m.row_start[i - m.first + 1]; ++k)
+      count_entry(v, shape, i, m.column[k]);
   return shape;
 }
 
@@ -87,8 +97,7 @@ std::vector<PetscInt> row_starts(const std::vector<PetscInt>& count) {
 // The blocks (r, 0) and (r, 1)'s entries (out[c]; null: not made), in one pass over
 // the rows of field r, row by row in order (a row's columns stay sorted): a pass a
 // block read each row twice.
-void fill_blocks(const FieldView& v, int r, const std::array<BlockArrays*, 2>& out) {
-  const PetscCsr& m = v.m;
+void fill_blocks(const FieldView& v, const PetscCsr& m, int r, const std::array<BlockArrays*, 2>& out) {
   std::array<std::size_t, 2> on_rank{}, off_rank{};  // entries filled of each part
   for (BlockArrays* b : out)
     if (b) {
@@ -140,7 +149,7 @@ std::string matrix_on(PetscInt rows, PetscInt cols, bool whole, std::unique_ptr<
 
 // Block (r, c)'s matrix on its filled arrays.
 std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockArrays> arrays, Mat& out) {
-  return matrix_on(v.rows(r), v.rows(c), v.m.last - v.m.first == v.m.n, std::move(arrays), out);
+  return matrix_on(v.rows(r), v.rows(c), v.whole(), std::move(arrays), out);
 }
 
 }  // namespace
@@ -150,8 +159,8 @@ std::string make_block(const FieldView& v, int r, int c, std::unique_ptr<BlockAr
 // MatCreateSubMatrix (docs/performance.md, "Huge pages, and the set-up on two ranks").
 std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure, bool own_transpose,
                          KBlocks& out) {
-  const FieldView v(m, is_pressure);
-  const Shapes shape = block_shapes(v);
+  const FieldView v(m.n, m.first, m.last, is_pressure);
+  const Shapes shape = block_shapes(v, m);
   Mat* const block[2][2] = {{&out.A_u, &out.Bt}, {own_transpose ? nullptr : &out.B, &out.D}};
   for (int r = 0; r < 2; ++r) {
     std::array<std::unique_ptr<BlockArrays>, 2> arrays;
@@ -162,13 +171,78 @@ std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure
         arrays[static_cast<std::size_t>(c)]->i = row_starts(s.local);
         arrays[static_cast<std::size_t>(c)]->oi = row_starts(s.other);
       }
-    fill_blocks(v, r, {arrays[0].get(), arrays[1].get()});
+    fill_blocks(v, m, r, {arrays[0].get(), arrays[1].get()});
     for (int c = 0; c < 2; ++c)
       if (block[r][c])
         if (std::string e = make_block(v, r, c, std::move(arrays[static_cast<std::size_t>(c)]), *block[r][c]);
             !e.empty())
           return e;
   }
+  return "";
+}
+
+namespace {
+
+// f(i, j, value) for each entry of this rank's rows held by m, numbered as PETSc's:
+// in m's order (by_new_columns false), or column by column in PETSc's order, so that
+// each row's entries come with their columns sorted.
+template <class F>
+void for_each_entry(const PetscColumns& m, bool by_new_columns, F&& f) {
+  for (int c = 0; c < m.n; ++c) {
+    const int j = by_new_columns ? m.from[c] : c;
+    for (int k = m.column_start[j]; k < m.column_start[j + 1]; ++k) {
+      const int i = m.to[m.row[k]];
+      if (i >= m.first && i < m.last) f(i, m.to[j], m.value[k]);
+    }
+  }
+}
+
+// A block's arrays, sized by its shape, and where each of its rows is filled next.
+struct BlockFill {
+  std::unique_ptr<BlockArrays> arrays = std::make_unique<BlockArrays>();
+  std::vector<PetscInt> next, other_next;
+  explicit BlockFill(const BlockShape& s) {
+    BlockArrays& b = *arrays;
+    b.i = row_starts(s.local), b.oi = row_starts(s.other);
+    b.j.resize(static_cast<std::size_t>(b.i.back())), b.a.resize(b.j.size());
+    b.oj.resize(static_cast<std::size_t>(b.oi.back())), b.oa.resize(b.oj.size());
+    next.assign(b.i.begin(), b.i.end() - 1), other_next.assign(b.oi.begin(), b.oi.end() - 1);
+  }
+  void add(const FieldView& v, std::size_t row, int j, PetscScalar value) {
+    BlockArrays& b = *arrays;
+    const PetscInt number = v.number[static_cast<std::size_t>(j)];
+    if (v.here(j)) {
+      const auto at = static_cast<std::size_t>(next[row]++);
+      b.j[at] = number - v.start[v.field(j)], b.a[at] = value;
+    } else {
+      const auto at = static_cast<std::size_t>(other_next[row]++);
+      b.oj[at] = number, b.oa[at] = value;
+    }
+  }
+};
+
+}  // namespace
+
+// One pass in m's order counts each block's entries a row; one in PETSc's order of the
+// columns fills the four blocks. On several ranks this replaced a copy of this rank's
+// rows in PETSc's order (petsc_solver.cpp's ordered_rows) and two passes over it
+// (docs/performance.md, "The split from the columns").
+std::string split_columns(const PetscColumns& m, const std::vector<char>& is_pressure, KBlocks& out) {
+  const FieldView v(m.n, m.first, m.last, is_pressure);
+  Shapes shape = empty_shapes(v);
+  for_each_entry(m, false, [&](int i, int j, double) { count_entry(v, shape, i, j); });
+  std::vector<BlockFill> fill;  // block (r, c) at 2 r + c
+  for (const auto& row_field : shape)
+    for (const BlockShape& s : row_field) fill.emplace_back(s);
+  for_each_entry(m, true, [&](int i, int j, double value) {
+    fill[static_cast<std::size_t>(2 * v.field(i) + v.field(j))].add(v, v.row_in_block(i), j, value);
+  });
+  Mat* const block[4] = {&out.A_u, &out.Bt, &out.B, &out.D};
+  for (std::size_t b = 0; b < 4; ++b)
+    if (std::string e = make_block(v, static_cast<int>(b / 2), static_cast<int>(b % 2), std::move(fill[b].arrays),
+                                   *block[b]);
+        !e.empty())
+      return e;
   return "";
 }
 

@@ -31,6 +31,11 @@ struct KBlocks {
 std::string split_blocks(const PetscCsr& m, const std::vector<char>& is_pressure, bool own_transpose,
                          KBlocks& out);
 
+// The same from m, this rank's rows of K by columns in the caller's numbering
+// (petsc_plugin.hpp), in two passes over m (a count, a fill in PETSc's order of the
+// columns): B made too. "" or the error.
+std::string split_columns(const PetscColumns& m, const std::vector<char>& is_pressure, KBlocks& out);
+
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w (M null: without it), a new matrix: the reasons are
 // petsc_plugin.cpp's (finish_iterative). "" or the error.
 std::string schur_matrix(const KBlocks& k, Mat M, Mat& S);

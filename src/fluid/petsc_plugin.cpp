@@ -190,8 +190,9 @@ void* create(const PetscSolverConfig& config, std::string& error) {
   return nullptr;
 }
 
-// "" if m holds this rank's rows [first, last), else the error.
-std::string wrong_rows(const PetscCsr& m, PetscInt first, PetscInt last) {
+// "" if m (PetscCsr or PetscColumns) holds this rank's rows [first, last), else the error.
+template <class Rows>
+std::string wrong_rows(const Rows& m, PetscInt first, PetscInt last) {
   if (m.first == first && m.last == last) return "";
   return "rows [" + std::to_string(m.first) + ", " + std::to_string(m.last) + ") given, this rank's are [" +
          std::to_string(first) + ", " + std::to_string(last) + ")";
@@ -243,11 +244,14 @@ bool one_rank() {
   return ranks == 1;
 }
 
-// Iterative: K's blocks made straight from this rank's rows m (split_blocks), never K
-// itself; the caller's arrays are not read once this returns. B is Bᵀ's transpose where
-// K is its own transpose, which is known where the caller lends K (m.borrowed, checked
-// by PetscSolver; one rank); a block of its own otherwise.
-std::string split_operator(Solver& s, const PetscCsr& m) {
+// Iterative: K's blocks made straight from this rank's rows m (split_blocks or
+// split_columns), never K itself; the caller's arrays are not read once this returns.
+// B is Bᵀ's transpose where K is its own transpose, which is known where the caller
+// lends K (m.borrowed, checked by PetscSolver; one rank); a block of its own otherwise.
+template <class Rows, class Split>
+std::string split_operator(Solver& s, const Rows& m, Split split) {
+  if (!s.config.iterative) return "the operator by columns is the iterative solver's only";
+  if (std::string e = release_preconditioner(s); !e.empty()) return e;
   if (std::string e = set_layout(s, m.n); !e.empty()) return e;
   if (std::string e = wrong_rows(m, s.first, s.last); !e.empty()) return e;
   if (!s.x) {
@@ -255,14 +259,18 @@ std::string split_operator(Solver& s, const PetscCsr& m) {
     FSI_TRY(VecDuplicate(s.x, &s.b));
     if (s.last - s.first < s.n) FSI_TRY(VecScatterCreateToAll(s.x, &s.to_all, &s.all));
   }
-  if (std::string e = split_blocks(m, s.config.is_pressure, m.borrowed && one_rank(), s.blocks); !e.empty())
-    return e;
+  if (std::string e = split(); !e.empty()) return e;
   if (s.config.symmetric)  // K's diagonal blocks are then symmetric too
     for (Mat block : {s.blocks.A_u, s.blocks.D}) {
       FSI_TRY(MatSetOption(block, MAT_SYMMETRIC, PETSC_TRUE));
       FSI_TRY(MatSetOption(block, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
     }
   return "";
+}
+
+std::string set_operator_columns(void* handle, const PetscColumns& m) {
+  auto& s = *static_cast<Solver*>(handle);
+  return split_operator(s, m, [&] { return split_columns(m, s.config.is_pressure, s.blocks); });
 }
 
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w for K = [A_u Bᵀ; B D] split by the fields (D = −C,
@@ -352,8 +360,11 @@ bool other_arrays(const Solver& s, const PetscCsr& m) {
 // matrix of the pattern, or a change between borrowed and copied) make a new A.
 std::string set_operator(void* handle, const PetscCsr& m) {
   auto& s = *static_cast<Solver*>(handle);
+  if (s.config.iterative)
+    return split_operator(s, m, [&] {
+      return split_blocks(m, s.config.is_pressure, m.borrowed && one_rank(), s.blocks);
+    });
   if (std::string e = release_preconditioner(s); !e.empty()) return e;
-  if (s.config.iterative) return split_operator(s, m);
   if (!s.x) return first_operator(s, m);
   if (m.n != s.n)
     return "the operator's size changed from " + std::to_string(s.n) + " to " + std::to_string(m.n);
@@ -456,10 +467,10 @@ std::string release(void* handle) {
   return release_preconditioner(s);
 }
 
-const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,    row_block,         sum_over_ranks,
-                             largest_over_ranks,  create,        set_operator,      set_up,
-                             finish_set_up,       set_pressure_mass, solve,         destroy,
-                             release};
+const PetscPlugin kPlugin = {kPetscPluginVersion, initialise,        row_block,    sum_over_ranks,
+                             largest_over_ranks,  create,            set_operator, set_operator_columns,
+                             set_up,              finish_set_up,     set_pressure_mass, solve,
+                             destroy,             release};
 
 }  // namespace
 }  // namespace fsi

@@ -32,6 +32,21 @@ struct PetscCsr {
   bool borrowed = false;
 };
 
+// This rank's rows of a square n × n matrix held by columns, compressed, in the
+// caller's numbering: column j's entries are column_start[j] .. column_start[j + 1], in
+// rows `row` (any order), of values `value`. The plugin's numbering is to[old] (from its
+// inverse: from[to[i]] = i); only the rows whose number to[i] lies in this rank's block
+// [first, last) are read.
+struct PetscColumns {
+  int n = 0;
+  int first = 0, last = 0;
+  const int* column_start = nullptr;  // n + 1
+  const int* row = nullptr;
+  const double* value = nullptr;
+  const int* to = nullptr;    // n
+  const int* from = nullptr;  // n
+};
+
 struct PetscSolverConfig {
   bool iterative = false;  // "petsc-iterative"; else MUMPS through PETSc
   bool symmetric = false;  // values symmetric: MUMPS LDLᵀ instead of LU
@@ -73,6 +88,10 @@ struct PetscPlugin {
   // pattern). Iterative: split at once into its blocks (petsc_blocks.hpp), never held
   // whole, and A's arrays not read once this returns.
   std::string (*set_operator)(void* solver, const PetscCsr& A);
+  // Iterative only: set_operator's, from this rank's rows held by columns in the
+  // caller's numbering. Spares the caller a copy of its rows in PETSc's numbering (the
+  // plugin's blocks are filled from its columns, read in PETSc's order).
+  std::string (*set_operator_columns)(void* solver, const PetscColumns& A);
   // After set_operator: the factorisation (direct); nothing more (iterative). Apart
   // from finish_set_up so that the caller can free its rows first: the set-up is the
   // memory's peak.
@@ -95,6 +114,6 @@ struct PetscPlugin {
   // next set_pressure_mass or set_operator does it too. Nothing for MUMPS.
   std::string (*release)(void* solver);
 };
-inline constexpr int kPetscPluginVersion = 8;
+inline constexpr int kPetscPluginVersion = 9;
 
 }  // namespace fsi
