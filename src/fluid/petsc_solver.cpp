@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -98,8 +99,31 @@ void PetscSolver::set_order(const std::vector<int>& pivots) {
   for (Eigen::Index k = 0; k < n; ++k)
     order_.indices()[pivots[static_cast<std::size_t>(k)]] = static_cast<int>(k);
   plugin_->row_block(static_cast<int>(n), first_, last_);
+  const std::vector<std::pair<int, int>> blocks = row_blocks(static_cast<int>(n));
+  if (std::find(blocks.begin(), blocks.end(), std::pair{first_, last_}) == blocks.end())
+    throw std::logic_error(name_ + ": the plugin's block of rows is not PETSc's even split");
 }
 
+// Every rank's block of rows [first, last) of n, rank by rank: PETSc's even split, the
+// plugin's row_block (set_order checks that they agree).
+std::vector<std::pair<int, int>> PetscSolver::row_blocks(int n) const {
+  std::vector<std::pair<int, int>> blocks;
+  const int base = n / ranks_, extra = n % ranks_;
+  for (int r = 0, first = 0; r < ranks_; ++r) {
+    const int last = first + base + (r < extra ? 1 : 0);
+    blocks.emplace_back(first, last);
+    first = last;
+  }
+  return blocks;
+}
+
+// The curve's order cut into the ranks' blocks, and each block back in the caller's
+// order: the assembler's, field by field (v1, v2, p), each in the mesh's order. Left
+// interleaved by vertex along the curve, the velocity block's BoomerAMG hierarchy cost
+// more to build and did less: at 930 681 triangles on two ranks GMRES took 113
+// iterations against one rank's 107, and 107 in this order, with the set-up's
+// hierarchies 1.44 -> 1.09 s and the Krylov solve 13.2 -> 11.9 s (docs/performance.md,
+// "Each rank's unknowns in the assembler's order").
 void PetscSolver::set_locality_order(std::vector<int> rank) {
   require_enough_unknowns(static_cast<Eigen::Index>(rank.size()));
   std::vector<int> pivots(rank.size());
@@ -107,6 +131,8 @@ void PetscSolver::set_locality_order(std::vector<int> rank) {
   std::sort(pivots.begin(), pivots.end(), [&rank](int a, int b) {
     return rank[static_cast<std::size_t>(a)] < rank[static_cast<std::size_t>(b)];
   });
+  for (const auto& [first, last] : row_blocks(static_cast<int>(pivots.size())))
+    std::sort(pivots.begin() + first, pivots.begin() + last);
   set_order(pivots);
 }
 

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fluid/sparse_solver.hpp"
@@ -55,6 +56,7 @@ class PetscSolver final : public SparseDirectSolver {
  private:
   void require_enough_unknowns(Eigen::Index n) const;
   void set_order(const std::vector<int>& pivots);
+  std::vector<std::pair<int, int>> row_blocks(int n) const;
   void order_for_ranks(const Eigen::SparseMatrix<double>& A);
   double sum_over_ranks(double value) const;
   std::vector<int> pressure_order(const std::vector<char>& is_pressure_ordered) const;
