@@ -226,7 +226,8 @@ struct BlockFill {
 // One pass in m's order counts each block's entries a row; one in PETSc's order of the
 // columns fills the four blocks. On several ranks this replaced a copy of this rank's
 // rows in PETSc's order (petsc_solver.cpp's ordered_rows) and two passes over it
-// (docs/performance.md, "The split from the columns").
+// (docs/performance.md, "Each rank's unknowns in the assembler's order, and the split from
+// the columns").
 std::string split_columns(const PetscColumns& m, const std::vector<char>& is_pressure, KBlocks& out) {
   const FieldView v(m.n, m.first, m.last, is_pressure);
   Shapes shape = empty_shapes(v);

@@ -145,7 +145,8 @@ class StokesAssembler {
   const std::vector<int>& dof_rank();
   // An order of the unknowns along a Hilbert curve through the vertices (each vertex's
   // v1, v2, p together; mesh/hilbert_order.hpp): contiguous blocks of it are compact
-  // parts of the domain, one per MPI rank (SparseDirectSolver::set_locality_order).
+  // parts of the domain, one per MPI rank (SparseDirectSolver::set_locality_order; the
+  // PETSc solver numbers each part's unknowns in the assembler's order again).
   std::vector<int> curve_rank() const;
 
  private:
