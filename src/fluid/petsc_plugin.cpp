@@ -250,7 +250,6 @@ bool one_rank() {
 // lends K (m.borrowed, checked by PetscSolver; one rank); a block of its own otherwise.
 template <class Rows, class Split>
 std::string split_operator(Solver& s, const Rows& m, Split split) {
-  if (!s.config.iterative) return "the operator by columns is the iterative solver's only";
   if (std::string e = release_preconditioner(s); !e.empty()) return e;
   if (std::string e = set_layout(s, m.n); !e.empty()) return e;
   if (std::string e = wrong_rows(m, s.first, s.last); !e.empty()) return e;
@@ -270,6 +269,7 @@ std::string split_operator(Solver& s, const Rows& m, Split split) {
 
 std::string set_operator_columns(void* handle, const PetscColumns& m) {
   auto& s = *static_cast<Solver*>(handle);
+  if (!s.config.iterative) return "the operator by columns is the iterative solver's only";
   return split_operator(s, m, [&] { return split_columns(m, s.config.is_pressure, s.blocks); });
 }
 

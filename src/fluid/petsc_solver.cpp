@@ -227,6 +227,13 @@ struct OrderedRows {
   }
 };
 
+// The inverse of the numbering to (old → new) of n unknowns: new → old.
+std::vector<int> inverse_order(const int* to, int n) {
+  std::vector<int> from(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) from[static_cast<std::size_t>(to[j])] = j;
+  return from;
+}
+
 OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, int first, int last) {
   OrderedRows r;
   r.start.assign(static_cast<std::size_t>(last - first) + 1, 0);
@@ -238,8 +245,7 @@ OrderedRows ordered_rows(const Eigen::SparseMatrix<double>& A, const int* to, in
   std::partial_sum(r.start.begin(), r.start.end(), r.start.begin());
   r.column.resize(static_cast<std::size_t>(r.start.back()));
   r.value.resize(r.column.size());
-  std::vector<int> from(static_cast<std::size_t>(A.outerSize()));  // new number → old
-  for (int j = 0; j < A.outerSize(); ++j) from[static_cast<std::size_t>(to[j])] = j;
+  const std::vector<int> from = inverse_order(to, static_cast<int>(A.outerSize()));
   std::vector<int> next(r.start.begin(), r.start.end() - 1);
   for (int jn = 0; jn < A.outerSize(); ++jn) {
     const int j = from[static_cast<std::size_t>(jn)];
@@ -289,9 +295,7 @@ void PetscSolver::factorize_values(const Eigen::SparseMatrix<double>& A) {
       throw SolverFailure(name_ + ": " + error);
   } else if (iterative_) {
     // Split from A's columns, read in PETSc's order: no copy of this rank's rows in it.
-    std::vector<int> from(static_cast<std::size_t>(A.cols()));  // PETSc's number → old
-    for (Eigen::Index j = 0; j < A.cols(); ++j)
-      from[static_cast<std::size_t>(order_.indices()[j])] = static_cast<int>(j);
+    const std::vector<int> from = inverse_order(order_.indices().data(), static_cast<int>(A.cols()));
     const PetscColumns columns{static_cast<int>(A.rows()), first_,           last_,
                                A.outerIndexPtr(),          A.innerIndexPtr(), A.valuePtr(),
                                order_.indices().data(),    from.data()};
