@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <stdexcept>
@@ -160,6 +161,20 @@ double PetscSolver::sum_over_ranks(double value) const {
   if (const std::string error = plugin_->sum_over_ranks(&value, 1); !error.empty())
     throw SolverFailure(name_ + ": " + error);
   return value;
+}
+
+std::pair<int, int> PetscSolver::share(int count) const {
+  int first = 0, last = count;
+  if (ranks_ > 1) plugin_->row_block(count, first, last);
+  return {first, last};
+}
+
+void PetscSolver::sum_shares(double* values, Eigen::Index count) const {
+  if (ranks_ == 1) return;
+  if (count > std::numeric_limits<int>::max())
+    throw std::logic_error(name_ + ": too many values to sum over the ranks at once");
+  if (const std::string error = plugin_->sum_over_ranks(values, static_cast<int>(count)); !error.empty())
+    throw SolverFailure(name_ + ": " + error);
 }
 
 double PetscSolver::norm_over_ranks(const Eigen::VectorXd& v) const {

@@ -53,6 +53,10 @@ class PetscSolver final : public SparseDirectSolver {
   void release_factorization() override;
   void finish_factorization_values() override;
 
+ public:
+  std::pair<int, int> share(int count) const override;
+  void sum_shares(double* values, Eigen::Index count) const override;
+
  private:
   void require_enough_unknowns(Eigen::Index n) const;
   void set_order(const std::vector<int>& pivots);

@@ -107,6 +107,12 @@ class SparseDirectSolver {
   // Whether `ok` holds on every rank: a failure on one rank's rows is every rank's,
   // before a collective solve that the others would otherwise wait in for ever.
   virtual bool on_every_rank(bool ok) const { return ok; }
+  // Work split over the ranks: this rank's even share [first, last) of `count` items
+  // (all of them on one rank); and `count` values of which each rank computed its
+  // share, the others zero, summed over the ranks entry by entry in place, so that
+  // every rank holds them all (a sum with zeros: the values unchanged to the bit).
+  virtual std::pair<int, int> share(int count) const { return {0, count}; }
+  virtual void sum_shares(double* /*values*/, Eigen::Index /*count*/) const {}
   // The last solve's iterations (an iterative solver's, also when it failed; −1 for a
   // direct solver, or a solve refused before it began).
   int last_iterations() const { return last_iterations_; }

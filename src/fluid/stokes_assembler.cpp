@@ -301,14 +301,22 @@ ElementSystem StokesAssembler::element_system(int t, double kappa) const {
 
 void StokesAssembler::fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps,
                              FluidSolution& out) const {
+  fields(x, chi, eps, out, 0, mesh_.num_triangles());
+}
+
+void StokesAssembler::fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps, FluidSolution& out,
+                             int first, int last) const {
   Eigen::VectorXd z = z_fixed_;
   for (std::size_t k = 0; k < free_.size(); ++k) z[free_[k]] = x[static_cast<Eigen::Index>(k)];
   const int nv = mesh_.num_vertices();
   out.v1 = z.segment(0, nv);
   out.v2 = z.segment(nv, nv);
   out.p = z.segment(2 * nv, nv);
-  out.bubble.resize(2, mesh_.num_triangles());
-  for (int t = 0; t < mesh_.num_triangles(); ++t) recover_bubble(t, chi[t] / eps, out);
+  if (first > 0 || last < mesh_.num_triangles())
+    out.bubble.setZero(2, mesh_.num_triangles());
+  else
+    out.bubble.resize(2, mesh_.num_triangles());
+  for (int t = first; t < last; ++t) recover_bubble(t, chi[t] / eps, out);
   out.exact_on = nullptr;
 }
 

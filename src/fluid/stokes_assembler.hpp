@@ -127,8 +127,12 @@ class StokesAssembler {
   ElementSystem element_system(int t, double kappa) const;
   const Eigen::VectorXd& traction_load() const { return traction_load_; }  // ∫ h·w
 
-  // The fields of the reduced solution x computed with χ and ε, everywhere.
+  // The fields of the reduced solution x computed with χ and ε, everywhere; with a
+  // range of triangles [first, last), the bubbles recovered there alone, zero elsewhere
+  // (a rank's share, summed over the ranks by the caller: SparseDirectSolver::share).
   void fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps, FluidSolution& out) const;
+  void fields(const Eigen::VectorXd& x, const Eigen::VectorXd& chi, double eps, FluidSolution& out, int first,
+              int last) const;
   // The prescribed values and zero elsewhere (a solution about to be filled in part).
   void prescribed_fields(FluidSolution& out) const;
   // The reduced vector (free dofs) of a solution's vertex values.

@@ -2,7 +2,8 @@
 // share's K and rhs are the whole system's rows it holds, empty and zero elsewhere,
 // after a full assembly and after an update where χ changed; two complementary shares
 // add up to the whole system; a share visits only the triangles that touch its rows.
-// K freed and rebuilt, and the element loads computed when needed, give the same numbers.
+// K freed and rebuilt, and the element loads computed when needed, give the same numbers;
+// the bubbles recovered by shares of the triangles add up to the whole ones.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -201,6 +202,26 @@ TEST(StokesAssembler, FreedAndRebuiltItAssemblesTheSameBitForBit) {
   lean.forget_assembly();
   lean.assemble(channel.chi(0.9), 1e-5);
   EXPECT_EQ((lean.rhs() - kept.rhs()).norm(), 0.0);
+}
+
+// The bubbles of a range of triangles (a rank's share, WholeSolve) are the whole
+// solution's there and zero elsewhere, so that the shares summed are the whole, bit
+// for bit; the vertex fields are the whole solution's everywhere.
+TEST(StokesAssembler, TheBubblesOfTwoSharesAddUpToTheWholeOnesBitForBit) {
+  const Channel channel;
+  StokesAssembler assembler = channel.assembler();
+  assembler.assemble(channel.chi(0.7), 1e-5);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(assembler.unknowns(), -1.0, 2.0);
+  const int nt = channel.mesh.num_triangles(), half = nt / 2;
+  FluidSolution whole, first, second;
+  assembler.fields(x, channel.chi(0.7), 1e-5, whole);
+  assembler.fields(x, channel.chi(0.7), 1e-5, first, 0, half);
+  assembler.fields(x, channel.chi(0.7), 1e-5, second, half, nt);
+  ASSERT_GT(whole.bubble.cwiseAbs().minCoeff(), 0.0) << "a zero bubble would not tell the shares apart";
+  EXPECT_EQ(first.bubble.rightCols(nt - half).norm(), 0.0);
+  EXPECT_EQ(second.bubble.leftCols(half).norm(), 0.0);
+  EXPECT_EQ((first.bubble + second.bubble - whole.bubble).norm(), 0.0);
+  EXPECT_EQ((first.v1 - whole.v1).norm() + (second.v2 - whole.v2).norm() + (first.p - whole.p).norm(), 0.0);
 }
 
 }  // namespace
