@@ -340,36 +340,4 @@ std::string schur_matrix(const KBlocks& k, Mat M, Mat& S) {
   return sum_of(std::move(terms), S);
 }
 
-std::string make_field_vectors(Mat Bt, Vec whole, IS u, IS p, std::shared_ptr<FieldVectors>& out) {
-  auto v = std::make_shared<FieldVectors>();
-  FSI_TRY(MatCreateVecs(Bt, &v->a_p, &v->a_u));
-  FSI_TRY(VecDuplicate(v->a_u, &v->b_u));
-  FSI_TRY(VecDuplicate(v->a_p, &v->b_p));
-  FSI_TRY(VecScatterCreate(whole, u, v->a_u, nullptr, &v->to_u));
-  FSI_TRY(VecScatterCreate(whole, p, v->a_p, nullptr, &v->to_p));
-  out = std::move(v);
-  return "";
-}
-
-PetscErrorCode FieldVectors::split(Vec whole) {
-  PetscCall(VecScatterBegin(to_u, whole, a_u, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(to_u, whole, a_u, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterBegin(to_p, whole, a_p, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(to_p, whole, a_p, INSERT_VALUES, SCATTER_FORWARD));
-  return 0;
-}
-
-PetscErrorCode FieldVectors::join(Vec u, Vec p, Vec whole) {
-  PetscCall(VecScatterBegin(to_u, u, whole, INSERT_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(to_u, u, whole, INSERT_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterBegin(to_p, p, whole, INSERT_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(to_p, p, whole, INSERT_VALUES, SCATTER_REVERSE));
-  return 0;
-}
-
-FieldVectors::~FieldVectors() {
-  VecDestroy(&a_u), VecDestroy(&a_p), VecDestroy(&b_u), VecDestroy(&b_p);
-  VecScatterDestroy(&to_u), VecScatterDestroy(&to_p);
-}
-
 }  // namespace fsi

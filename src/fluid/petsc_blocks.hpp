@@ -9,6 +9,7 @@
 
 #include <petscmat.h>
 
+#include "fluid/petsc_field_vectors.hpp"
 #include "fluid/petsc_plugin.hpp"
 
 #include <memory>
@@ -39,27 +40,5 @@ std::string split_columns(const PetscColumns& m, const std::vector<char>& is_pre
 // S_p = D − B diag(A_u)⁻¹ Bᵀ − M_w (M null: without it), a new matrix: the reasons are
 // petsc_plugin.cpp's (finish_iterative). "" or the error.
 std::string schur_matrix(const KBlocks& k, Mat M, Mat& S);
-
-// Two vectors a field (a_u, b_u of u's layout, a_p, b_p of p's) and the scatters between
-// the whole vector and each field's: the work space of the operator by blocks and of
-// the preconditioner. One set serves both (make_field_vectors): the Krylov method
-// applies one, then the other, never one inside the other, and a set is 4 vectors of
-// the velocity's and pressure's sizes, 48 bytes a fluid triangle, with its scatters'
-// indices (docs/performance.md, "The run's later passes").
-struct FieldVectors {
-  Vec a_u = nullptr, a_p = nullptr, b_u = nullptr, b_p = nullptr;
-  VecScatter to_u = nullptr, to_p = nullptr;
-  FieldVectors() = default;
-  FieldVectors(const FieldVectors&) = delete;
-  FieldVectors& operator=(const FieldVectors&) = delete;
-  ~FieldVectors();
-  // whole → (a_u, a_p), and (u, p) → whole.
-  PetscErrorCode split(Vec whole);
-  PetscErrorCode join(Vec u, Vec p, Vec whole);
-};
-
-// A set for the layouts of Bᵀ (its rows u, its columns p) and of the whole vector,
-// split into the index sets u and p. "" or the error (out then null).
-std::string make_field_vectors(Mat Bt, Vec whole, IS u, IS p, std::shared_ptr<FieldVectors>& out);
 
 }  // namespace fsi

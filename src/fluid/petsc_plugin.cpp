@@ -290,7 +290,7 @@ std::string finish_iterative(Solver& s) {
   std::string e = schur_matrix(k, s.M, S);
   MatDestroy(&s.M);  // in S_p now; the next set-up is given its own
   if (e.empty() && KSPGetPC(s.ksp, &pc)) e = "PETSc: KSPGetPC failed";
-  if (e.empty()) e = make_field_vectors(k.Bt, s.x, s.fields[0], s.fields[1], v);
+  if (e.empty()) e = make_field_vectors(s.x, s.fields[0], s.fields[1], v);
   if (e.empty()) e = set_schur_factorisation(pc, k.A_u, S, k.Bt, v);
   MatDestroy(&S);  // taken, unless an error came first
   if (e.empty()) e = make_block_operator(k, v, s.x, s.op);

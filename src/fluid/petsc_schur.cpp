@@ -10,7 +10,7 @@ namespace {
 struct Factorisation {
   KSP ksp_u = nullptr, ksp_p = nullptr;  // one V-cycle on A_u, one on S
   Mat Bt = nullptr;                      // K's (u, p) block
-  std::shared_ptr<FieldVectors> v;       // a: r's fields, b: y's (the operator's too)
+  std::shared_ptr<FieldVectors> v;       // in: r's fields, out: y's (the operator's too)
 };
 
 PetscErrorCode destroy_factorisation(PC pc) {
@@ -40,12 +40,14 @@ PetscErrorCode apply(PC pc, Vec r, Vec y) {
   Factorisation* f = nullptr;
   PetscCall(PCShellGetContext(pc, &f));
   FieldVectors& v = *f->v;
-  PetscCall(v.split(r));
-  PetscCall(inner_solve(pc, f->ksp_p, v.a_p, v.b_p));
-  PetscCall(MatMult(f->Bt, v.b_p, v.b_u));
-  PetscCall(VecAYPX(v.b_u, -1.0, v.a_u));  // r_u − Bᵀ y_p
-  PetscCall(inner_solve(pc, f->ksp_u, v.b_u, v.a_u));
-  return v.join(v.a_u, v.b_p, y);
+  PetscCall(v.read(r));
+  PetscCall(v.write(y));
+  PetscCall(inner_solve(pc, f->ksp_p, v.in_p, v.out_p));
+  PetscCall(MatMult(f->Bt, v.out_p, v.w_u));
+  PetscCall(VecAYPX(v.w_u, -1.0, v.in_u));  // r_u − Bᵀ y_p
+  PetscCall(inner_solve(pc, f->ksp_u, v.w_u, v.out_u));
+  PetscCall(v.end_read(r));
+  return v.end_write(y);
 }
 
 // One V-cycle on M under the options' prefix: the defaults set in the options database
