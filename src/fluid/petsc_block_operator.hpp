@@ -9,6 +9,7 @@
 #pragma once
 
 #include "fluid/petsc_blocks.hpp"
+#include "fluid/petsc_field_vectors.hpp"
 
 namespace fsi {
 

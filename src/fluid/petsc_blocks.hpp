@@ -9,10 +9,8 @@
 
 #include <petscmat.h>
 
-#include "fluid/petsc_field_vectors.hpp"
 #include "fluid/petsc_plugin.hpp"
 
-#include <memory>
 #include <string>
 #include <vector>
 

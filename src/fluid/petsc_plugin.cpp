@@ -20,6 +20,7 @@
 
 #include "fluid/petsc_block_operator.hpp"
 #include "fluid/petsc_blocks.hpp"
+#include "fluid/petsc_field_vectors.hpp"
 #include "fluid/petsc_ksp_defaults.hpp"
 #include "fluid/petsc_schur.hpp"
 #include "fluid/petsc_try.hpp"

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "fluid/petsc_blocks.hpp"
+#include "fluid/petsc_field_vectors.hpp"
 
 namespace fsi {
 
