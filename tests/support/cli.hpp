@@ -1,6 +1,7 @@
 // Runs the fsicontact binary in a scratch directory and captures what it says.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,12 +27,33 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
-// A fresh empty directory under the system temp dir, unique per test.
+// The scratch directories this test process made, removed when it ends if its tests
+// passed; a failed test's are kept, to be looked at. Left behind, they filled the temp
+// dir: 199 of them, 65 MB, after a day of runs. Only the process that made them removes
+// them (a child forked by a test that exits through exit() does not).
+class ScratchDirs {
+ public:
+  void add(const std::filesystem::path& dir) { dirs_.push_back(dir); }
+  ~ScratchDirs() {
+    if (::getpid() != owner_ || !::testing::UnitTest::GetInstance()->Passed()) return;
+    std::error_code ec;
+    for (const auto& d : dirs_) std::filesystem::remove_all(d, ec);
+  }
+
+ private:
+  pid_t owner_ = ::getpid();
+  std::vector<std::filesystem::path> dirs_;
+};
+
+// A fresh empty directory under the system temp dir, unique per test, removed when the
+// test process ends if its tests passed.
 inline std::filesystem::path scratch_dir(const std::string& name) {
+  static ScratchDirs made;  // after gtest's UnitTest, so destroyed before it
   const auto dir = std::filesystem::temp_directory_path() /
                    ("fsicontact-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  made.add(dir);
   return dir;
 }
 
