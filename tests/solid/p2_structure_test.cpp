@@ -88,10 +88,13 @@ Solved solve(const std::string& name, const std::vector<std::string>& overrides)
 }
 
 // The QP of a P2 structure (rows on the nodal mesh's Γ_C: vertices and midpoints) is
-// the same problem for both solvers, with the linear and a nonlinear model.
+// the same problem for both solvers, with the linear and a nonlinear model. On the
+// beam one element thick (structure.h = H): the solvers' agreement does not need the
+// case's two, and under the sanitizers the test took 33-38 s on them, 18.6 s on one.
 TEST(P2Structure, IpoptAndTheActiveSetSolverAgreeOnAP2Beam) {
   for (const char* model : {"linear", "neo-hookean"}) {
-    const std::vector<std::string> base{"structure.element=P2", std::string("structure.model=") + model};
+    const std::vector<std::string> base{"structure.element=P2", std::string("structure.model=") + model,
+                                        "structure.h=0.0025"};
     std::vector<std::string> a = base, b = base;
     a.push_back("contact.solver=active-set");
     b.push_back("contact.solver=ipopt");
