@@ -98,7 +98,8 @@ int main(int argc, char** argv) {
   for (int r = 0; r < 12; r++) {
     const double s = 3.0 + r * 1e-300, t0 = now();
     for (size_t i = 0; i < n; i++) c[i] = a[i] + s * b[i];
-    if (now() - t0 < best) best = now() - t0;
+    const double t = now() - t0;
+    if (t < best) best = t;
   }
   printf("%.6g\n", c[7] == 7 ? 3.0 * n * 8 / best / 1e9 : 0);
   return 0;
@@ -113,19 +114,21 @@ def rate(binary, kind, k=1, core=None):
     return sum(float(p.communicate()[0]) for p in ps)
 
 
+def two_cores():
+    """The first two cores this process may run on."""
+    return sorted(os.sched_getaffinity(0))[:2]
+
+
 def cores_fma(binary):
-    """Each of the first two cores' multiply-adds, in GFMA/s, this moment."""
-    return " / ".join(f"{rate(binary, 'fma', 1, c):.1f}" for c in sorted(os.sched_getaffinity(0))[:2])
+    """Each of the two cores' multiply-adds, in GFMA/s, this moment."""
+    return " / ".join(f"{rate(binary, 'fma', 1, c):.1f}" for c in two_cores())
 
 
 def probe(binary):
     """This moment's (arithmetic, triad) of two processes over one, then each core's
     (latency in ns, triad in GB/s), the process held on it."""
-    def rates(kind, k, core=None):
-        return rate(binary, kind, k, core)
-    both = tuple(rates(kind, 2) / rates(kind, 1) for kind in ("arithmetic", "triad"))
-    cores = sorted(os.sched_getaffinity(0))[:2]
-    return both + tuple((rates("latency", 1, c), rates("triad", 1, c)) for c in cores)
+    both = tuple(rate(binary, kind, 2) / rate(binary, kind, 1) for kind in ("arithmetic", "triad"))
+    return both + tuple((rate(binary, "latency", 1, c), rate(binary, "triad", 1, c)) for c in two_cores())
 
 
 def build_probe(tmp):
@@ -187,7 +190,8 @@ def main():
     a.add_argument("--passes", type=int, default=1,
                    help="coupling passes (a run's later passes rebuild the preconditioner)")
     a.add_argument("--probe", action="store_true",
-                   help="time the machine's two cores before each round (arithmetic, triad)")
+                   help="time the machine's two cores: each core's multiply-adds before each run; "
+                        "arithmetic, triads and latencies before each round")
     o = a.parse_args()
     print("| round | h | ε | unknowns | solver | ranks | wall | fluid solve | assembly | peak memory | Krylov iterations |"
           + (" cores' GFMA/s before |" if o.probe else ""))

@@ -241,8 +241,9 @@ TEST(Converge, ThePenaltysErrorBarCoversTheBodyFittedLoad) {
 TEST(Converge, TheFluidAloneNeedsNoEpsRule) {
   const fs::path dir = testing::scratch_dir("converge-fluid-alone");
   const std::string dfg = std::string("'") + FSICONTACT_SOURCE_DIR + "/cases/dfg-2d1.toml'";
-  const testing::CliRun r = testing::run_cli("converge " + dfg + " --levels 3 --ratio 1.5 --set fluid.h=0.05 --set fluid.h_near=0.04 "
-                                             "--set output.png=false --set output.vtu=false --out study", dir);
+  const std::string sizes = " --levels 3 --ratio 1.5 --set fluid.h=0.05 --set fluid.h_near=0.04";
+  const testing::CliRun r = testing::run_cli(
+      "converge " + dfg + sizes + " --set output.png=false --set output.vtu=false --out study", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("[eps]"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(testing::slurp(dir / "study/summary.json"));

@@ -29,7 +29,7 @@ inline std::string slurp(const std::filesystem::path& p) {
 
 // The scratch directories this test process made, removed when it ends if its tests
 // passed; a failed test's are kept, to be looked at. Left behind, they filled the temp
-// dir: 199 of them, 65 MB, after a day of runs. Only the process that made them removes
+// dir: 182 of them, 65 MB, after a day of runs. Only the process that made them removes
 // them (a child forked by a test that exits through exit() does not).
 class ScratchDirs {
  public:
